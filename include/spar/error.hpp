@@ -1,0 +1,36 @@
+#pragma once
+/// \file
+/// The one exception type of spar. Every error in user input or in a run that cannot go on raises
+/// a spar::Error whose message says what went wrong, where, and how to fix it.
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace spar {
+
+/// An error a user can act on: `what` went wrong, `where` (function, object, index, time),
+/// and `fix` (what to change). `what()` returns the three joined into one message.
+class Error : public std::runtime_error {
+public:
+  Error(std::string_view what, std::string_view where, std::string_view fix)
+      : std::runtime_error(compose(what, where, fix)), where_(where), fix_(fix) {}
+
+  /// The place the error was detected, e.g. "lie::log".
+  const std::string& where() const noexcept { return where_; }
+  /// What the user can do about it.
+  const std::string& fix() const noexcept { return fix_; }
+
+private:
+  static std::string compose(std::string_view what, std::string_view where, std::string_view fix) {
+    std::string message = "spar: ";
+    message.append(where).append(": ").append(what);
+    if (!fix.empty()) message.append(" (fix: ").append(fix).append(")");
+    return message;
+  }
+
+  std::string where_;
+  std::string fix_;
+};
+
+}  // namespace spar
