@@ -1,0 +1,9 @@
+#pragma once
+/// \file
+/// spar::iga — spline geometry for analysis: knot vectors, B-spline/NURBS bases and their
+/// derivatives, NURBS curves, Gauss–Legendre quadrature. Overview and sources: docs/iga.md.
+
+#include <spar/iga/basis.hpp>
+#include <spar/iga/knot_vector.hpp>
+#include <spar/iga/nurbs_curve.hpp>
+#include <spar/iga/quadrature.hpp>
