@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "random_rotations.hpp"
+#include "tolerances.hpp"
 
 using namespace spar;
 using Vector3L = Eigen::Matrix<long double, 3, 1>;
@@ -157,6 +158,22 @@ TEST_CASE("second derivatives of T a and T^T a match finite differences", "[lie]
                                     return Vector3L(lie::tangent_transpose_derivative(t, a_l) * b_l);
                                   },
                                   theta_l)) <= fd_tolerance);
+  }
+}
+
+TEST_CASE("tangent_hessian is the symmetric Hessian of m^T T(theta) b", "[lie][tangent]") {
+  // Checked against central differences of its gradient ∂(mᵀT b)/∂Θ = tangent_derivative(Θ, b)ᵀ m.
+  const Eigen::Vector3d m(0.7, -1.3, 0.4), b(-0.2, 0.9, 1.1);
+  const Vector3L m_l = m.cast<long double>(), b_l = b.cast<long double>();
+  for (const Eigen::Vector3d& theta : sample_rotation_vectors()) {
+    const Eigen::Matrix3d H = lie::tangent_hessian(theta, m, b);
+    INFO("theta = " << theta.transpose());
+    CHECK((H - H.transpose()).norm() <= test::round_off_3x3);
+    CHECK(relative_difference(H, central_difference(
+                                     [&](const Vector3L& t) {
+                                       return Vector3L(lie::tangent_derivative(t, b_l).transpose() * m_l);
+                                     },
+                                     Vector3L(theta.cast<long double>()))) <= fd_tolerance);
   }
 }
 

@@ -165,6 +165,32 @@ Matrix3<typename DerivedT::Scalar> tangent_transpose_second_derivative(
   return detail::tangent_family_second_derivative<Scalar>(theta, a, b, Scalar(-1));
 }
 
+/// The Hessian ∂²(mᵀ T(Θ) b)/∂Θ² of the scalar mᵀT(Θ)b (symmetric; eq. C7b). With s = mᵀΘ̃²b,
+/// p = b × m and q = ∂s/∂Θ = (b·Θ) m + (m·Θ) b − 2 (m·b) Θ:
+///   (b3 s − b2 Θ·p) ΘΘᵀ − c2 (Θpᵀ + pΘᵀ + (Θ·p) I) + c3 (Θqᵀ + qΘᵀ + s I) + a3 (mbᵀ + bmᵀ − 2 (m·b) I).
+/// It is the geometric stiffness of the curvature energy mᵀκ, κ = T(Θ)Θ′, for b = Θ′.
+/// For the transpose, mᵀT(Θ)ᵀb = bᵀT(Θ)m: swap the arguments.
+template <class DerivedT, class DerivedM, class DerivedB>
+Matrix3<typename DerivedT::Scalar> tangent_hessian(const Eigen::MatrixBase<DerivedT>& theta_in,
+                                                   const Eigen::MatrixBase<DerivedM>& m_in,
+                                                   const Eigen::MatrixBase<DerivedB>& b_in) {
+  using Scalar = typename DerivedT::Scalar;
+  using coefficients::a3, coefficients::b2, coefficients::b3, coefficients::c2, coefficients::c3;
+  const Vector3<Scalar> theta = theta_in, m = m_in, b = b_in;
+  const Scalar angle = detail::checked_angle(theta, "lie::tangent_hessian");
+  const Vector3<Scalar> p = b.cross(m);
+  const Scalar m_dot_b = m.dot(b);
+  const Scalar s = m.dot(theta) * b.dot(theta) - angle * angle * m_dot_b;
+  const Vector3<Scalar> q = b.dot(theta) * m + m.dot(theta) * b - 2 * m_dot_b * theta;
+  const Scalar c2v = c2(angle), c3v = c3(angle);
+  Matrix3<Scalar> H = (b3(angle) * s - b2(angle) * theta.dot(p)) * theta * theta.transpose();
+  H -= c2v * (theta * p.transpose() + p * theta.transpose());
+  H += c3v * (theta * q.transpose() + q * theta.transpose());
+  H += a3(angle) * (m * b.transpose() + b * m.transpose());
+  H.diagonal().array() += c3v * s - c2v * theta.dot(p) - 2 * a3(angle) * m_dot_b;
+  return H;
+}
+
 /// J = ∂(T⁻¹(Θ) a)/∂Θ (eq. C8). Requires ‖Θ‖ < 2π.
 template <class DerivedT, class DerivedA>
 Matrix3<typename DerivedT::Scalar> tangent_inverse_derivative(
