@@ -4,6 +4,7 @@
 /// derivatives, NURBS curves, Gauss–Legendre quadrature. Overview and sources: docs/iga.md.
 
 #include <spar/iga/basis.hpp>
+#include <spar/iga/circular_arc.hpp>
 #include <spar/iga/knot_vector.hpp>
 #include <spar/iga/nurbs_curve.hpp>
 #include <spar/iga/quadrature.hpp>
