@@ -1,0 +1,96 @@
+#pragma once
+/// \file
+/// The geometrically exact (Simo–Reissner) beam on a NURBS centerline, in the local-frame
+/// Lie-group formulation of 003 §2–3 (docs/beam.md). This class is the constant model: mesh,
+/// section, reference frames and the per-Gauss-point reference data. The state lives in a
+/// core::Configuration (one node per control point); the kernel is core::evaluate_beam_element.
+
+#include <spar/core/configuration.hpp>
+#include <spar/core/cross_section.hpp>
+#include <spar/iga/basis.hpp>
+#include <spar/iga/nurbs_curve.hpp>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace spar::core {
+
+/// Most control points of one beam element (degree ≤ iga::max_degree).
+inline constexpr int max_beam_element_nodes = iga::max_degree + 1;
+
+/// What a beam is built from.
+struct BeamParameters {
+  /// The reference centerline; its control points become the beam's nodes, its knot spans the
+  /// elements, its basis the interpolation of positions (003 eq. 39) and rotations (eq. 40).
+  iga::NurbsCurve<3> centerline;
+  /// Section stiffness C (003 eq. 15).
+  SectionStiffness stiffness;
+  /// Reference rotation of each control point (columns: A₁ along the beam, A₂, A₃ section axes).
+  /// When empty they are built from the centerline's unit tangent at the Greville abscissae and
+  /// `section_axis_hint` (A₃ = the hint made orthogonal to A₁).
+  std::vector<Eigen::Matrix3d> reference_rotations;
+  Eigen::Vector3d section_axis_hint = Eigen::Vector3d::UnitZ();
+  /// Gauss points per element; 0 chooses p + 1, and for p = 1 selective reduced integration
+  /// (one point for the two shears, two for everything else; 003 §3.2).
+  int quadrature_points = 0;
+};
+
+/// Reference data of one Gauss point of a beam element.
+struct BeamGaussPoint {
+  double weight = 0.0;  ///< quadrature weight × dS/dξ (reference arc length per unit ξ)
+  int part = 0;         ///< which constitutive part C_part is integrated here (see constitutive())
+  std::array<double, max_beam_element_nodes> shape{};             ///< N_I
+  std::array<double, max_beam_element_nodes> shape_derivative{};  ///< dN_I/dS
+  Eigen::Vector3d reference_translational_strain = Eigen::Vector3d::Zero();  ///< R₀ᵀx₀′
+  Eigen::Vector3d reference_curvature = Eigen::Vector3d::Zero();             ///< κ₀
+};
+
+/// One element: its first control point (global node = first_node() + first_control_point) and
+/// its Gauss points.
+struct BeamElement {
+  int first_control_point = 0;
+  std::vector<BeamGaussPoint> gauss_points;
+};
+
+class GeometricallyExactBeam {
+public:
+  /// Builds the beam and appends its nodes (control points, reference rotations) to
+  /// `configuration`. Throws spar::Error for invalid stiffness, degree, frames or quadrature.
+  GeometricallyExactBeam(const BeamParameters& parameters, Configuration& configuration);
+
+  int degree() const { return degree_; }
+  int control_point_count() const { return control_point_count_; }
+  int element_count() const { return static_cast<int>(elements_.size()); }
+  /// Global index of the beam's first node; control point I is node first_node() + I.
+  int first_node() const { return first_node_; }
+  /// Global node of control point I.
+  int node(int control_point) const;
+  const BeamElement& element(int e) const { return elements_[e]; }
+  const iga::NurbsCurve<3>& reference_centerline() const { return centerline_; }
+  /// The constitutive matrices integrated by the Gauss points (C for p ≥ 2; for p = 1 with
+  /// selective integration, C without the shear block and the shear block alone).
+  const std::vector<Eigen::Matrix<double, 6, 6>>& constitutive() const { return constitutive_; }
+  const SectionStiffness& stiffness() const { return stiffness_; }
+
+  /// The point x(u) and the rotation R(u) of the centerline at parameter u in a configuration,
+  /// by the same interpolation as the strains (003 eqs. 39, 40, 42).
+  Eigen::Vector3d position_at(const Configuration& q, double u) const;
+  Eigen::Matrix3d rotation_at(const Configuration& q, double u) const;
+
+private:
+  void build_elements(int quadrature_points);
+  void compute_reference_strains(const Configuration& reference);
+
+  iga::NurbsCurve<3> centerline_;
+  int degree_;
+  int control_point_count_;
+  int first_node_ = 0;
+  SectionStiffness stiffness_;
+  std::vector<Eigen::Matrix<double, 6, 6>> constitutive_;
+  std::vector<BeamElement> elements_;
+};
+
+}  // namespace spar::core

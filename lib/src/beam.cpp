@@ -1,0 +1,170 @@
+#include <spar/core/beam.hpp>
+#include <spar/core/beam_element.hpp>
+
+#include "beam_interpolation.hpp"
+
+#include <spar/error.hpp>
+#include <spar/iga/quadrature.hpp>
+#include <spar/lie/lie.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace spar::core {
+
+namespace {
+
+constexpr const char* where = "core::GeometricallyExactBeam";
+
+/// The reference rotation at each control point: A₁ the unit tangent at its Greville abscissa,
+/// A₃ the hint made orthogonal to A₁, A₂ = A₃ × A₁.
+std::vector<Eigen::Matrix3d> frames_from_tangent(const iga::NurbsCurve<3>& curve,
+                                                 const Eigen::Vector3d& hint) {
+  std::vector<Eigen::Matrix3d> frames;
+  for (double u : curve.knots().greville()) {
+    const Eigen::Vector3d a1 = curve.unit_tangent(u);
+    Eigen::Vector3d a3 = hint - hint.dot(a1) * a1;
+    if (a3.norm() < 1e-8 * hint.norm())
+      throw Error("the section axis hint is parallel to the centerline at u = " +
+                      std::to_string(u),
+                  where, "give a section_axis_hint that is not tangent to the beam");
+    a3.normalize();
+    Eigen::Matrix3d R;
+    R << a1, a3.cross(a1), a3;
+    frames.push_back(R);
+  }
+  return frames;
+}
+
+}  // namespace
+
+GeometricallyExactBeam::GeometricallyExactBeam(const BeamParameters& parameters,
+                                               Configuration& configuration)
+    : centerline_(parameters.centerline),
+      degree_(parameters.centerline.degree()),
+      control_point_count_(static_cast<int>(parameters.centerline.control_points().cols())),
+      stiffness_(parameters.stiffness) {
+  stiffness_.validate();
+  if (degree_ < 1)
+    throw Error("a beam needs degree p >= 1, got " + std::to_string(degree_), where,
+                "use a linear or higher-degree centerline");
+  std::vector<Eigen::Matrix3d> frames = parameters.reference_rotations;
+  if (frames.empty()) frames = frames_from_tangent(centerline_, parameters.section_axis_hint);
+  if (static_cast<int>(frames.size()) != control_point_count_)
+    throw Error("got " + std::to_string(frames.size()) + " reference rotations for " +
+                    std::to_string(control_point_count_) + " control points",
+                where, "give one reference rotation per control point, or none");
+  for (const Eigen::Matrix3d& R : frames) lie::check_rotation(R, where);
+
+  first_node_ = configuration.node_count();
+  for (int I = 0; I < control_point_count_; ++I)
+    configuration.add_node(centerline_.control_points().col(I), frames[I]);
+  build_elements(parameters.quadrature_points);
+  compute_reference_strains(configuration);
+}
+
+int GeometricallyExactBeam::node(int control_point) const {
+  if (control_point < 0 || control_point >= control_point_count_)
+    throw Error("control point " + std::to_string(control_point) + " does not exist (the beam has " +
+                    std::to_string(control_point_count_) + ")",
+                where, "use an index in [0, control_point_count())");
+  return first_node_ + control_point;
+}
+
+// Gauss points per element: p + 1 (full integration), or for p = 1 selective reduced integration:
+// the shear part of C at one point, the rest at two (003 §3.2).
+void GeometricallyExactBeam::build_elements(int quadrature_points) {
+  if (quadrature_points < 0)
+    throw Error("negative number of Gauss points", where, "give 0 (automatic) or a positive count");
+  const Eigen::Matrix<double, 6, 6> C = stiffness_.matrix();
+  struct Part {
+    int points;
+    int index;
+  };
+  std::vector<Part> parts;
+  if (quadrature_points == 0 && degree_ == 1) {
+    Eigen::Matrix<double, 6, 6> shear = Eigen::Matrix<double, 6, 6>::Zero();
+    shear.block<2, 2>(1, 1) = C.block<2, 2>(1, 1);
+    constitutive_ = {C - shear, shear};
+    parts = {{2, 0}, {1, 1}};
+  } else {
+    constitutive_ = {C};
+    parts = {{quadrature_points == 0 ? degree_ + 1 : quadrature_points, 0}};
+  }
+
+  const iga::KnotVector& U = centerline_.knots();
+  iga::BasisTable table;
+  for (int e = 0; e < U.element_count(); ++e) {
+    const iga::Element span = U.element(e);
+    BeamElement element;
+    element.first_control_point = span.span - degree_;
+    const double half_length = 0.5 * (span.last - span.first);
+    for (const Part& part : parts) {
+      const iga::GaussRule rule = iga::gauss_legendre(part.points);
+      for (std::size_t g = 0; g < rule.points.size(); ++g) {
+        const double u = span.first + (rule.points[g] + 1.0) * half_length;
+        iga::rational_basis_derivatives(U, span.span, u, 1, centerline_.weights(), table);
+        const double jacobian = centerline_.derivatives(u, 1).col(1).norm();  // dS/du
+        if (!(jacobian > 0.0))
+          throw Error("the centerline has zero speed at u = " + std::to_string(u), where,
+                      "give a regular centerline (no coincident control points)");
+        BeamGaussPoint gp;
+        gp.weight = rule.weights[g] * half_length * jacobian;
+        gp.part = part.index;
+        for (int I = 0; I <= degree_; ++I) {
+          gp.shape[I] = table(0, I);
+          gp.shape_derivative[I] = table(1, I) / jacobian;
+        }
+        element.gauss_points.push_back(gp);
+      }
+    }
+    elements_.push_back(std::move(element));
+  }
+}
+
+// γ₀ and κ₀ are the strains of the reference configuration under the same interpolation, so the
+// reference configuration is stress-free exactly, straight or curved (003 eq. 8).
+void GeometricallyExactBeam::compute_reference_strains(const Configuration& reference) {
+  for (int e = 0; e < element_count(); ++e)
+    for (std::size_t g = 0; g < elements_[e].gauss_points.size(); ++g) {
+      const BeamStrains total = beam_strains(*this, e, static_cast<int>(g), reference);
+      BeamGaussPoint& gp = elements_[e].gauss_points[g];
+      gp.reference_translational_strain = total.translational;
+      gp.reference_curvature = total.curvature;
+    }
+}
+
+namespace {
+
+/// Element index and basis table at parameter u.
+int element_at(const iga::NurbsCurve<3>& curve, double u, iga::BasisTable& table) {
+  const iga::KnotVector& U = curve.knots();
+  const int span = U.find_span(u);
+  iga::rational_basis_derivatives(U, span, u, 0, curve.weights(), table);
+  for (int e = 0; e < U.element_count(); ++e)
+    if (U.element(e).span == span) return e;
+  throw Error("no element holds u = " + std::to_string(u), "core::GeometricallyExactBeam",
+              "give a parameter inside the knot range");
+}
+
+}  // namespace
+
+Eigen::Vector3d GeometricallyExactBeam::position_at(const Configuration& q, double u) const {
+  iga::BasisTable table;
+  const int e = element_at(centerline_, u, table);
+  const int first = node(elements_[e].first_control_point);
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  for (int I = 0; I <= degree_; ++I) x += table(0, I) * q.position[first + I];
+  return x;
+}
+
+Eigen::Matrix3d GeometricallyExactBeam::rotation_at(const Configuration& q, double u) const {
+  iga::BasisTable table;
+  const int e = element_at(centerline_, u, table);
+  const detail::RelativeRotations rel = detail::relative_rotations(*this, e, q);
+  Eigen::Vector3d theta = Eigen::Vector3d::Zero();
+  for (int I = 0; I <= degree_; ++I) theta += table(0, I) * rel.psi[I];
+  return rel.reference * lie::exp(theta);  // 003 eq. 42
+}
+
+}  // namespace spar::core

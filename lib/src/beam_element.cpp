@@ -1,0 +1,259 @@
+// The geometrically exact beam element kernel: energy, force and exact Hessian (docs/beam.md).
+//
+// The energy of a Gauss point depends on the element unknowns only through twelve numbers
+//   z = (x′, a, Θ, Θ′),   x′ = Σ N_I′ x_I,  a = Δφ_0,  Θ = Σ N_I ψ_I,  Θ′ = Σ N_I′ ψ_I,
+// with ψ_I = log(exp(−Δφ_0) R_0ᵀ R_I exp(Δφ_I)) the Crisfield–Jelenić relative rotations about the
+// first control point (003 eq. 40). The kernel therefore works in three stages:
+//   1. per Gauss point, the gradient and Hessian of W = ½ εᵀ C ε in z (eqs. B5–B8);
+//   2. the linear map z ← y, y = (x_0 … x_p, a, ψ_1 … ψ_p), accumulated over Gauss points (B9);
+//   3. the nonlinear map y ← Δ through ψ_I(Δφ_0, Δφ_I), first and second order (B10–B11).
+#include <spar/core/beam_element.hpp>
+
+#include "beam_interpolation.hpp"
+
+#include <spar/error.hpp>
+#include <spar/lie/lie.hpp>
+
+#include <string>
+
+namespace spar::core {
+
+namespace {
+
+using Matrix3 = Eigen::Matrix3d;
+using Vector3 = Eigen::Vector3d;
+using Matrix12 = Eigen::Matrix<double, 12, 12>;
+using Vector12 = Eigen::Matrix<double, 12, 1>;
+using Matrix6x12 = Eigen::Matrix<double, 6, 12>;
+
+// z-blocks.
+constexpr int z_x_prime = 0, z_a = 1, z_theta = 2, z_theta_prime = 3;
+
+/// Kinematics of one Gauss point (003 eqs. 41–42).
+struct PointKinematics {
+  lie::ExpAndTangent<double> exp_tangent;  // E = exp(Θ), T = T(Θ)
+  Matrix3 rotation;                        // R = R_r E
+  Vector3 v;                               // R_rᵀ x′
+  Vector3 w;                               // Eᵀ v = Rᵀ x′
+  Vector3 kappa;                           // T Θ′
+};
+
+PointKinematics kinematics(const detail::RelativeRotations& rel,
+                           const detail::InterpolatedFields& f) {
+  PointKinematics k;
+  k.exp_tangent = lie::exp_and_tangent(f.theta);
+  k.rotation = rel.reference * k.exp_tangent.rotation;
+  k.v = rel.reference.transpose() * f.x_prime;
+  k.w = k.exp_tangent.rotation.transpose() * k.v;
+  k.kappa = k.exp_tangent.tangent * f.theta_prime;
+  return k;
+}
+
+/// B = ∂ε/∂z (docs/beam.md eq. B5):
+///   γ rows: [Rᵀ, Eᵀ hat(v), hat(w) T, 0],  κ rows: [0, 0, ∂(TΘ′)/∂Θ, T].
+Matrix6x12 strain_operator(const PointKinematics& k, const detail::InterpolatedFields& f) {
+  const Matrix3& E = k.exp_tangent.rotation;
+  const Matrix3& T = k.exp_tangent.tangent;
+  Matrix6x12 B = Matrix6x12::Zero();
+  B.block<3, 3>(0, 3 * z_x_prime) = k.rotation.transpose();
+  B.block<3, 3>(0, 3 * z_a) = E.transpose() * lie::hat(k.v);
+  B.block<3, 3>(0, 3 * z_theta) = lie::hat(k.w) * T;
+  B.block<3, 3>(3, 3 * z_theta) = lie::tangent_derivative(f.theta, f.theta_prime);
+  B.block<3, 3>(3, 3 * z_theta_prime) = T;
+  return B;
+}
+
+/// The geometric part Σ σ_i ∂²ε_i/∂z² with σ = (n, m) (docs/beam.md eqs. B6–B7).
+Matrix12 geometric_stiffness(const PointKinematics& k, const detail::InterpolatedFields& f,
+                             const detail::RelativeRotations& rel, const Vector3& n,
+                             const Vector3& m) {
+  const Matrix3& E = k.exp_tangent.rotation;
+  const Matrix3& T = k.exp_tangent.tangent;
+  const Vector3 u = E * n;
+  const Matrix3 hat_n_T = lie::hat(n) * T;
+  Matrix12 G = Matrix12::Zero();
+  // nᵀγ = (R_r exp(a) E n)ᵀ x′: mixed x′–a, x′–Θ, and a–a, a–Θ, Θ–Θ terms (B6).
+  G.block<3, 3>(3 * z_x_prime, 3 * z_a) = -rel.reference * lie::hat(u);
+  G.block<3, 3>(3 * z_x_prime, 3 * z_theta) = -k.rotation * hat_n_T;
+  Matrix3 aa = 0.5 * (u * k.v.transpose() + k.v * u.transpose());
+  aa.diagonal().array() -= u.dot(k.v);
+  G.block<3, 3>(3 * z_a, 3 * z_a) = aa;
+  G.block<3, 3>(3 * z_a, 3 * z_theta) = lie::hat(k.v) * E * hat_n_T;
+  G.block<3, 3>(3 * z_theta, 3 * z_theta) =
+      lie::tangent_transpose_derivative(f.theta, n.cross(k.w)) +
+      T.transpose() * lie::hat(n) * lie::hat(k.w) * T +
+      // mᵀκ = mᵀ T(Θ) Θ′ (B7).
+      lie::tangent_hessian(f.theta, m, f.theta_prime);
+  G.block<3, 3>(3 * z_theta_prime, 3 * z_theta) = lie::tangent_transpose_derivative(f.theta, m);
+  // Mirror the upper blocks.
+  G.block<3, 3>(3 * z_a, 3 * z_x_prime) = G.block<3, 3>(3 * z_x_prime, 3 * z_a).transpose();
+  G.block<3, 3>(3 * z_theta, 3 * z_x_prime) =
+      G.block<3, 3>(3 * z_x_prime, 3 * z_theta).transpose();
+  G.block<3, 3>(3 * z_theta, 3 * z_a) = G.block<3, 3>(3 * z_a, 3 * z_theta).transpose();
+  G.block<3, 3>(3 * z_theta, 3 * z_theta_prime) =
+      G.block<3, 3>(3 * z_theta_prime, 3 * z_theta).transpose();
+  return G;
+}
+
+/// The linear map from y-block j to the z-blocks at one Gauss point: z_zb += c · y_j (B9).
+struct LinearMap {
+  int count = 0;
+  int z_block[2] = {0, 0};
+  double coefficient[2] = {0.0, 0.0};
+  void add(int zb, double c) {
+    z_block[count] = zb;
+    coefficient[count] = c;
+    ++count;
+  }
+};
+
+/// y-blocks of an element with k nodes: x_I → I, a → k, ψ_I → k + I (I ≥ 1).
+void linear_maps(const BeamGaussPoint& gp, int k, std::array<LinearMap, 2 * max_beam_element_nodes>& maps) {
+  for (int j = 0; j < 2 * k; ++j) maps[j].count = 0;
+  for (int I = 0; I < k; ++I) maps[I].add(z_x_prime, gp.shape_derivative[I]);
+  maps[k].add(z_a, 1.0);
+  for (int I = 1; I < k; ++I) {
+    maps[k + I].add(z_theta, gp.shape[I]);
+    maps[k + I].add(z_theta_prime, gp.shape_derivative[I]);
+  }
+}
+
+/// Σ_i λ_i ∂²ψ_i/∂b² for ψ(b) = log(exp(ψ) exp(b)) at b = 0 (docs/beam.md eq. B10):
+///   ∂(T⁻ᵀλ)/∂ψ · T⁻¹ − ½ hat(T⁻ᵀ λ).
+Matrix3 relative_rotation_hessian(const Vector3& psi, const Vector3& lambda) {
+  const Matrix3 T_inverse = lie::tangent_inverse(psi);
+  return lie::tangent_inverse_transpose_derivative(psi, lambda) * T_inverse -
+         0.5 * lie::hat(Vector3(T_inverse.transpose() * lambda));
+}
+
+}  // namespace
+
+namespace detail {
+
+RelativeRotations relative_rotations(const GeometricallyExactBeam& beam, int e,
+                                     const Configuration& q) {
+  RelativeRotations rel;
+  rel.node_count = beam.degree() + 1;
+  const int first = beam.node(beam.element(e).first_control_point);
+  rel.reference = q.rotation[first];
+  rel.psi[0].setZero();
+  for (int I = 1; I < rel.node_count; ++I) {
+    rel.psi[I] = lie::relative_rotation(rel.reference, q.rotation[first + I]);
+    // 1e-6 short of π: beyond it log(R_rᵀR_I) jumps to the opposite vector and the
+    // interpolated rotation field tears.
+    if (rel.psi[I].norm() > 3.14159165)
+      throw Error("control points " + std::to_string(first) + " and " +
+                      std::to_string(first + I) + " of element " + std::to_string(e) +
+                      " are rotated by pi relative to each other",
+                  "core::evaluate_beam_element",
+                  "refine the beam mesh, or reduce the load or time step so rotations stay smooth");
+  }
+  return rel;
+}
+
+}  // namespace detail
+
+BeamStrains beam_strains(const GeometricallyExactBeam& beam, int e, int g, const Configuration& q) {
+  const BeamGaussPoint& gp = beam.element(e).gauss_points[g];
+  const detail::RelativeRotations rel = detail::relative_rotations(beam, e, q);
+  const detail::InterpolatedFields f =
+      detail::interpolate(beam, e, q, rel, gp.shape, gp.shape_derivative);
+  const PointKinematics k = kinematics(rel, f);
+  return {k.w - gp.reference_translational_strain, k.kappa - gp.reference_curvature};
+}
+
+void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Configuration& q,
+                           BeamEvaluation what, BeamElementResult& result) {
+  const bool with_stiffness = (what == BeamEvaluation::force_and_stiffness);
+  const detail::RelativeRotations rel = detail::relative_rotations(beam, e, q);
+  const int k = rel.node_count;
+  const int n = dofs_per_node * k;  // = size of y = size of Δ
+
+  // Stage 1 and 2: energy, gradient g_y and Hessian H_y in y (B5–B9).
+  ElementVector g_y = ElementVector::Zero(n);
+  ElementMatrix H_y;
+  if (with_stiffness) H_y.setZero(n, n);
+  std::array<LinearMap, 2 * max_beam_element_nodes> maps;
+  result.strain_energy = 0.0;
+  for (const BeamGaussPoint& gp : beam.element(e).gauss_points) {
+    const detail::InterpolatedFields f =
+        detail::interpolate(beam, e, q, rel, gp.shape, gp.shape_derivative);
+    const PointKinematics kin = kinematics(rel, f);
+    Eigen::Matrix<double, 6, 1> strain;
+    strain << kin.w - gp.reference_translational_strain, kin.kappa - gp.reference_curvature;
+    const Eigen::Matrix<double, 6, 6>& C = beam.constitutive()[gp.part];
+    const Eigen::Matrix<double, 6, 1> stress = C * strain;  // (N, M), 003 eq. 17
+    result.strain_energy += 0.5 * gp.weight * strain.dot(stress);
+
+    const Matrix6x12 B = strain_operator(kin, f);
+    const Vector12 g_z = gp.weight * (B.transpose() * stress);
+    linear_maps(gp, k, maps);
+    for (int j = 0; j < 2 * k; ++j)
+      for (int t = 0; t < maps[j].count; ++t)
+        g_y.segment<3>(3 * j) += maps[j].coefficient[t] * g_z.segment<3>(3 * maps[j].z_block[t]);
+    if (!with_stiffness) continue;
+
+    const Matrix12 H_z = gp.weight * (B.transpose() * C * B +
+                                      geometric_stiffness(kin, f, rel, stress.head<3>(),
+                                                          stress.tail<3>()));
+    for (int j = 0; j < 2 * k; ++j) {
+      Eigen::Matrix<double, 3, 12> row = Eigen::Matrix<double, 3, 12>::Zero();
+      for (int t = 0; t < maps[j].count; ++t)
+        row += maps[j].coefficient[t] * H_z.middleRows<3>(3 * maps[j].z_block[t]);
+      for (int l = j; l < 2 * k; ++l)
+        for (int t = 0; t < maps[l].count; ++t)
+          H_y.block<3, 3>(3 * j, 3 * l) +=
+              maps[l].coefficient[t] * row.middleCols<3>(3 * maps[l].z_block[t]);
+    }
+  }
+
+  // Stage 3: y ← Δ (B10–B11). Δ-blocks: translation of node I → 2I, rotation → 2I + 1.
+  // ∂ψ_I/∂Δφ_I = T⁻¹(ψ_I), ∂ψ_I/∂Δφ_0 = −T⁻ᵀ(ψ_I), x and a map identically.
+  std::array<Matrix3, max_beam_element_nodes> d_psi_d_own, d_psi_d_first;
+  for (int I = 1; I < k; ++I) {
+    d_psi_d_own[I] = lie::tangent_inverse(rel.psi[I]);
+    d_psi_d_first[I] = -d_psi_d_own[I].transpose();
+  }
+  result.internal_force.resize(n);
+  for (int I = 0; I < k; ++I) result.internal_force.segment<3>(6 * I) = g_y.segment<3>(3 * I);
+  result.internal_force.segment<3>(3) = g_y.segment<3>(3 * k);
+  for (int I = 1; I < k; ++I) {
+    const auto g_psi = g_y.segment<3>(3 * (k + I));
+    result.internal_force.segment<3>(6 * I + 3) = d_psi_d_own[I].transpose() * g_psi;
+    result.internal_force.segment<3>(3) += d_psi_d_first[I].transpose() * g_psi;
+  }
+  if (!with_stiffness) return;
+
+  // H_y is filled in its upper block triangle; complete it.
+  H_y.triangularView<Eigen::StrictlyLower>() = H_y.transpose();
+  // J (n × n): Δ → y, applied as H_Δ = Jᵀ H_y J with J's sparse block structure.
+  ElementMatrix J = ElementMatrix::Zero(n, n);
+  for (int I = 0; I < k; ++I) J.block<3, 3>(3 * I, 6 * I).setIdentity();
+  J.block<3, 3>(3 * k, 3).setIdentity();
+  for (int I = 1; I < k; ++I) {
+    J.block<3, 3>(3 * (k + I), 6 * I + 3) = d_psi_d_own[I];
+    J.block<3, 3>(3 * (k + I), 3) = d_psi_d_first[I];
+  }
+  result.stiffness.noalias() = J.transpose() * H_y * J;
+  // Second-order terms of ψ_I(Δφ_0, Δφ_I) contracted with λ = ∂Π/∂ψ_I (B10).
+  for (int I = 1; I < k; ++I) {
+    const Vector3 lambda = g_y.segment<3>(3 * (k + I));
+    const Vector3& psi = rel.psi[I];
+    result.stiffness.block<3, 3>(6 * I + 3, 6 * I + 3) += relative_rotation_hessian(psi, lambda);
+    result.stiffness.block<3, 3>(3, 3) +=
+        relative_rotation_hessian(Vector3(-psi), Vector3(-lambda));
+    const Matrix3 cross =
+        -lie::tangent_inverse_transpose_derivative(psi, lambda) * d_psi_d_own[I].transpose();
+    result.stiffness.block<3, 3>(6 * I + 3, 3) += cross;
+    result.stiffness.block<3, 3>(3, 6 * I + 3) += cross.transpose();
+  }
+}
+
+void add_local_tangent_correction(const Eigen::Ref<const Eigen::VectorXd>& force,
+                                  Eigen::Ref<Eigen::MatrixXd> tangent) {
+  for (int I = 0; I < force.size() / dofs_per_node; ++I)
+    tangent.block<3, 3>(6 * I + 3, 6 * I + 3) +=
+        0.5 * lie::hat(Eigen::Vector3d(force.segment<3>(6 * I + 3)));
+}
+
+}  // namespace spar::core
