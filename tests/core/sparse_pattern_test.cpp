@@ -1,0 +1,226 @@
+// SparsePattern: its structure and scatter against a dense matrix assembled by hand, Dirichlet
+// conditions, serial against parallel assembly, and the errors it raises.
+#include <spar/core/sparse_assembly.hpp>
+#include <spar/error.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+using namespace spar;
+using core::PatternBlock;
+using core::SparsePattern;
+
+namespace {
+
+/// A small model: two overlapping elements, one element with a repeated dof, and a constraint
+/// (multiplier row 6) coupling dofs 1 and 4.
+const int small_size = 8;
+std::vector<PatternBlock> small_blocks() {
+  return {PatternBlock::element({0, 1, 2}), PatternBlock::element({2, 3, 4}),
+          PatternBlock::element({5, 3, 5}), PatternBlock::coupling({6}, {1, 4})};
+}
+
+Eigen::MatrixXd random_block(const PatternBlock& block, unsigned seed) {
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::MatrixXd K(block.rows.size(), block.cols.size());
+  for (Eigen::Index j = 0; j < K.cols(); ++j)
+    for (Eigen::Index i = 0; i < K.rows(); ++i) K(i, j) = uniform(generator);
+  return K;
+}
+
+/// D(rows, cols) += K and, for a coupling block, D(cols, rows) += K_transpose_position, entry by
+/// entry in the order SparsePattern scatters them.
+void add_dense(Eigen::MatrixXd& D, const PatternBlock& block, const Eigen::MatrixXd& K,
+               const Eigen::MatrixXd& K_transpose_position) {
+  for (std::size_t j = 0; j < block.cols.size(); ++j)
+    for (std::size_t i = 0; i < block.rows.size(); ++i) D(block.rows[i], block.cols[j]) += K(i, j);
+  if (!block.with_transpose) return;
+  for (std::size_t j = 0; j < block.cols.size(); ++j)
+    for (std::size_t i = 0; i < block.rows.size(); ++i)
+      D(block.cols[j], block.rows[i]) += K_transpose_position(j, i);
+}
+
+bool same_values(const core::SparseMatrix& A, const core::SparseMatrix& B) {
+  return A.nonZeros() == B.nonZeros() &&
+         std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), B.valuePtr());
+}
+
+/// A cubic B-spline beam: element e couples nodes e..e+3 with 6 dofs each (24 × 24 blocks),
+/// followed by `constraints` coupling blocks (one multiplier row each, after the node dofs)
+/// tying the 6 dofs of an evenly spaced node.
+struct BeamChain {
+  int size;
+  std::vector<PatternBlock> blocks;
+};
+BeamChain beam_chain(int elements, int constraints) {
+  const int nodes = elements + 3;
+  BeamChain chain{6 * nodes + constraints, {}};
+  for (int e = 0; e < elements; ++e) {
+    std::vector<int> dofs;
+    for (int dof = 6 * e; dof < 6 * (e + 4); ++dof) dofs.push_back(dof);
+    chain.blocks.push_back(PatternBlock::element(dofs));
+  }
+  for (int c = 0; c < constraints; ++c) {
+    const int node = c * (nodes - 1) / std::max(constraints - 1, 1);
+    std::vector<int> dofs;
+    for (int dof = 6 * node; dof < 6 * node + 6; ++dof) dofs.push_back(dof);
+    chain.blocks.push_back(PatternBlock::coupling({6 * nodes + c}, dofs));
+  }
+  return chain;
+}
+
+}  // namespace
+
+TEST_CASE("SparsePattern holds the diagonal and the blocks' positions, and nothing else",
+          "[core][sparse_pattern]") {
+  const SparsePattern pattern(small_size, small_blocks());
+  Eigen::MatrixXi expected = Eigen::MatrixXi::Identity(small_size, small_size);
+  for (const PatternBlock& block : small_blocks())
+    for (int row : block.rows)
+      for (int col : block.cols) {
+        expected(row, col) = 1;
+        if (block.with_transpose) expected(col, row) = 1;
+      }
+  const core::SparseMatrix& A = pattern.matrix();
+  CHECK(A.isCompressed());
+  CHECK(A.rows() == small_size);
+  CHECK(A.cols() == small_size);
+  CHECK(pattern.nonzeros() == expected.sum());
+  Eigen::MatrixXi stored = Eigen::MatrixXi::Zero(small_size, small_size);
+  for (int c = 0; c < small_size; ++c)
+    for (core::SparseMatrix::InnerIterator it(A, c); it; ++it) {
+      stored(it.row(), it.col()) = 1;
+      CHECK(it.value() == 0.0);
+    }
+  CHECK(stored == expected);
+  // Dof 7 is in no block: only its diagonal.
+  CHECK(stored.col(7).sum() == 1);
+}
+
+TEST_CASE("add_block scatters exactly like a dense assembly by hand", "[core][sparse_pattern]") {
+  // The same additions happen in the same order on both sides, so the results agree bitwise.
+  SparsePattern pattern(small_size, small_blocks());
+  Eigen::MatrixXd reference = Eigen::MatrixXd::Zero(small_size, small_size);
+  for (int pass = 0; pass < 2; ++pass)
+    for (int b = 0; b < pattern.block_count(); ++b) {
+      const Eigen::MatrixXd K = random_block(pattern.block(b), 10 * b + pass);
+      pattern.add_block(b, K);
+      add_dense(reference, pattern.block(b), K, K.transpose());
+    }
+  CHECK(Eigen::MatrixXd(pattern.matrix()) == reference);
+
+  SECTION("a coupling block with different values at the transpose position") {
+    const Eigen::MatrixXd B = random_block(pattern.block(3), 77);
+    const Eigen::MatrixXd B_transpose_position = 3.0 * B.transpose();
+    pattern.add_block(3, B, B_transpose_position);
+    add_dense(reference, pattern.block(3), B, B_transpose_position);
+    CHECK(Eigen::MatrixXd(pattern.matrix()) == reference);
+  }
+
+  SECTION("set_zero zeroes the values and keeps the structure") {
+    const int nonzeros = pattern.nonzeros();
+    const int* row_indices = pattern.matrix().innerIndexPtr();
+    pattern.set_zero();
+    CHECK(pattern.nonzeros() == nonzeros);
+    CHECK(pattern.matrix().innerIndexPtr() == row_indices);
+    CHECK(Eigen::MatrixXd(pattern.matrix()).isZero(0.0));
+  }
+}
+
+TEST_CASE("apply_dirichlet zeroes rows and columns, sets the diagonal to 1 and the rhs to 0",
+          "[core][sparse_pattern]") {
+  SparsePattern pattern(small_size, small_blocks());
+  for (int b = 0; b < pattern.block_count(); ++b)
+    pattern.add_block(b, random_block(pattern.block(b), b + 1));
+  Eigen::MatrixXd expected(pattern.matrix());
+  const std::vector<int> fixed = {2, 6, 2};
+  for (int dof : fixed) {
+    expected.row(dof).setZero();
+    expected.col(dof).setZero();
+    expected(dof, dof) = 1.0;
+  }
+  Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(small_size, 1.0, 8.0);
+  Eigen::VectorXd expected_rhs = rhs;
+  expected_rhs(2) = expected_rhs(6) = 0.0;
+  const int nonzeros = pattern.nonzeros();
+
+  pattern.apply_dirichlet(fixed, rhs);
+  CHECK(Eigen::MatrixXd(pattern.matrix()) == expected);
+  CHECK(rhs == expected_rhs);
+  CHECK(pattern.nonzeros() == nonzeros);
+
+  CHECK_THROWS_WITH(pattern.apply_dirichlet({8}, rhs), Catch::Contains("fixed dof 8 outside"));
+  Eigen::VectorXd short_rhs(3);
+  CHECK_THROWS_WITH(pattern.apply_dirichlet({0}, short_rhs),
+                    Catch::Contains("right-hand side has 3 entries"));
+}
+
+TEST_CASE("serial and parallel assembly give bitwise identical matrices",
+          "[core][sparse_pattern][openmp]") {
+  const BeamChain chain = beam_chain(60, 5);
+  SparsePattern serial(chain.size, chain.blocks);
+  SparsePattern parallel(chain.size, chain.blocks);
+  const core::BlockCompute compute = [&](int block_id, Eigen::MatrixXd& K) {
+    K = random_block(chain.blocks[block_id], block_id);
+  };
+  serial.assemble(compute, core::AssemblyExecution::serial);
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    parallel.assemble(compute, core::AssemblyExecution::parallel);
+    CHECK(same_values(serial.matrix(), parallel.matrix()));
+  }
+
+  // Against a dense assembly in block order: the sums run in another order, so they agree to
+  // round-off. An entry sums at most 4 element contributions and 1 constraint contribution, each
+  // of size ≤ 1: ≤ 5 roundings of at most ulp(5)/2 = 4.4e-16 each, 2.2e-15 in all.
+  Eigen::MatrixXd reference = Eigen::MatrixXd::Zero(chain.size, chain.size);
+  for (int b = 0; b < static_cast<int>(chain.blocks.size()); ++b) {
+    const Eigen::MatrixXd K = random_block(chain.blocks[b], b);
+    add_dense(reference, chain.blocks[b], K, K.transpose());
+  }
+  CHECK((Eigen::MatrixXd(serial.matrix()) - reference).cwiseAbs().maxCoeff() <= 3e-15);
+}
+
+TEST_CASE("a cubic beam chain needs four colours", "[core][sparse_pattern][openmp]") {
+  // Element e shares nodes with e±1, e±2, e±3, so four elements in a row are pairwise adjacent.
+  const BeamChain chain = beam_chain(40, 0);
+  CHECK(SparsePattern(chain.size, chain.blocks).colour_count() == 4);
+}
+
+TEST_CASE("assemble rethrows a failure of the block computation", "[core][sparse_pattern]") {
+  const BeamChain chain = beam_chain(20, 0);
+  SparsePattern pattern(chain.size, chain.blocks);
+  const auto execution =
+      GENERATE(core::AssemblyExecution::serial, core::AssemblyExecution::parallel);
+  CHECK_THROWS_WITH(pattern.assemble(
+                        [](int block_id, Eigen::MatrixXd&) {
+                          if (block_id == 7) throw std::runtime_error("element 7 failed");
+                        },
+                        execution),
+                    Catch::Contains("element 7 failed"));
+  CHECK_THROWS_WITH(pattern.assemble([](int, Eigen::MatrixXd& K) { K.resize(3, 3); }, execution),
+                    Catch::Contains("is 3 × 3, the block is 24 × 24"));
+}
+
+TEST_CASE("SparsePattern rejects bad sizes, indices and block ids", "[core][sparse_pattern]") {
+  CHECK_THROWS_WITH(SparsePattern(-1, {}), Catch::Contains("negative matrix size -1"));
+  CHECK_THROWS_WITH(SparsePattern(4, {PatternBlock::element({0, 4})}),
+                    Catch::Contains("block 0 has row index 4 outside [0, 4)"));
+  CHECK_THROWS_WITH(SparsePattern(4, {PatternBlock::element({1}), PatternBlock::coupling({0}, {-1})}),
+                    Catch::Contains("block 1 has column index -1 outside [0, 4)"));
+  CHECK_THROWS_AS(SparsePattern(4, {PatternBlock::coupling({7}, {0})}), Error);
+
+  SparsePattern pattern(small_size, small_blocks());
+  CHECK_THROWS_WITH(pattern.add_block(4, Eigen::MatrixXd::Zero(1, 1)),
+                    Catch::Contains("block id 4 outside [0, 4)"));
+  CHECK_THROWS_WITH(pattern.add_block(0, Eigen::MatrixXd::Zero(3, 2)),
+                    Catch::Contains("the matrix of block 0 is 3 × 2, the block is 3 × 3"));
+  CHECK_THROWS_WITH(pattern.add_block(0, Eigen::MatrixXd::Zero(3, 3), Eigen::MatrixXd::Zero(3, 3)),
+                    Catch::Contains("block 0 is an element block"));
+  CHECK_THROWS_WITH(pattern.add_block(3, Eigen::MatrixXd::Zero(1, 2), Eigen::MatrixXd::Zero(1, 2)),
+                    Catch::Contains("transpose-position matrix of block 3 is 1 × 2"));
+}
