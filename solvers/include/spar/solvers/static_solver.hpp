@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// Nonlinear statics: Newton–Raphson with load stepping and adaptive cut-back, in the chart about
+/// the last converged configuration (Cardona–Géradin; 003 eqs. 20–28), so the tangent of the
+/// internal forces is symmetric. Sparse assembly on a pattern built once; the linear solver's
+/// symbolic analysis is done once per run.
+
+#include <spar/core/model.hpp>
+#include <spar/core/sparse_assembly.hpp>
+#include <spar/error.hpp>
+#include <spar/solvers/linear_solver.hpp>
+
+#include <vector>
+
+namespace spar::solvers {
+
+struct StaticOptions {
+  int load_steps = 10;                ///< initial number of equal load increments to λ = 1
+  int max_iterations = 25;            ///< Newton iterations per step before a cut-back
+  double residual_tolerance = 1e-9;   ///< ‖r‖∞ ≤ tol · max(‖f_int‖∞, ‖λ f_ext‖∞) on free dofs
+  double increment_tolerance = 1e-10; ///< ‖Δ‖∞ of the last Newton increment (m and rad)
+  int max_cutbacks = 10;              ///< halvings of a load increment before giving up
+  LinearSolverKind linear_solver = LinearSolverKind::klu;
+  core::AssemblyExecution assembly = core::AssemblyExecution::serial;
+};
+
+/// One converged load step.
+struct StaticStep {
+  double load_factor = 0.0;
+  int iterations = 0;             ///< Newton iterations (linear solves) of this step
+  double residual_norm = 0.0;     ///< ‖r‖∞ at convergence
+  double increment_norm = 0.0;    ///< ‖Δ‖∞ of the last increment
+};
+
+struct StaticReport {
+  std::vector<StaticStep> steps;
+  int newton_iterations = 0;  ///< over all steps, including those of failed attempts
+  int cutbacks = 0;
+  int factorizations = 0;
+  double wall_seconds = 0.0;
+};
+
+/// Thrown when a load step does not converge even after the allowed cut-backs. The model keeps
+/// the last converged state, whose load factor this error carries.
+class ConvergenceError : public Error {
+public:
+  ConvergenceError(std::string_view what, std::string_view where, std::string_view fix,
+                   double last_converged_load_factor)
+      : Error(what, where, fix), last_converged_load_factor_(last_converged_load_factor) {}
+  double last_converged_load_factor() const { return last_converged_load_factor_; }
+
+private:
+  double last_converged_load_factor_;
+};
+
+/// Brings model.state() into equilibrium with the loads at load factor 1. Returns what it did;
+/// throws ConvergenceError (model at the last converged load factor) if a step fails.
+StaticReport solve_static(core::Model& model, const StaticOptions& options = {});
+
+}  // namespace spar::solvers
