@@ -5,6 +5,7 @@
 
 #include <spar/iga/basis.hpp>
 #include <spar/iga/circular_arc.hpp>
+#include <spar/iga/knot_operations.hpp>
 #include <spar/iga/knot_vector.hpp>
 #include <spar/iga/nurbs_curve.hpp>
 #include <spar/iga/quadrature.hpp>
