@@ -4,6 +4,7 @@
 /// derivatives, NURBS curves, Gauss–Legendre quadrature. Overview and sources: docs/iga.md.
 
 #include <spar/iga/basis.hpp>
+#include <spar/iga/bezier_extraction.hpp>
 #include <spar/iga/circular_arc.hpp>
 #include <spar/iga/knot_operations.hpp>
 #include <spar/iga/knot_vector.hpp>
