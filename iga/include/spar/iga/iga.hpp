@@ -10,3 +10,4 @@
 #include <spar/iga/knot_vector.hpp>
 #include <spar/iga/nurbs_curve.hpp>
 #include <spar/iga/quadrature.hpp>
+#include <spar/iga/rational_bezier.hpp>
