@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace spar::solvers {
@@ -70,7 +71,8 @@ public:
       const double scale = std::max(free_norm(internal, fixed_), free_norm(external, fixed_));
       const double residual_norm = free_norm(residual, fixed_);
       if (!std::isfinite(residual_norm)) return false;
-      if (iteration > 0 && residual_norm <= options_.residual_tolerance * scale &&
+      const double allowed = std::max(options_.residual_tolerance * scale, round_off_floor());
+      if (iteration > 0 && residual_norm <= allowed &&
           increment_norm <= options_.increment_tolerance) {
         step = {load_factor, iteration, residual_norm, increment_norm};
         return true;
@@ -93,6 +95,16 @@ public:
   }
 
 private:
+  /// The residual that round-off alone leaves at an exact solution: the stiffness times a
+  /// perturbation of the positions by 64 ulps of the model's size, 64 ε max|K_ii| max(1, |x|).
+  /// Without it a small load on a stiff structure (EA ε ≫ load) could never converge.
+  double round_off_floor() const {
+    double length = 1.0;
+    for (const Eigen::Vector3d& x : model_.state().position) length = std::max(length, x.norm());
+    const double diagonal = pattern_.matrix().diagonal().cwiseAbs().maxCoeff();
+    return 64 * std::numeric_limits<double>::epsilon() * diagonal * length;
+  }
+
   /// The chart's residual pieces f_int, λ f_ext and the tangent K_φ into the pattern.
   void assemble(double load_factor, const std::vector<Eigen::Vector3d>& phi,
                 Eigen::VectorXd& internal, Eigen::VectorXd& external) {

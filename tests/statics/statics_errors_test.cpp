@@ -1,0 +1,51 @@
+// Bad input to the model and the statics solver raises spar::Error with a useful message.
+#include <spar/solvers/static_solver.hpp>
+
+#include <catch2/catch.hpp>
+
+#include "cantilever.hpp"
+
+using namespace spar;
+
+TEST_CASE("a clamp on a node that does not exist is refused", "[statics][errors]") {
+  auto c = test::make_cantilever(2, 2);
+  CHECK_THROWS_WITH(c.model.fix(1000), Catch::Contains("node 1000 does not exist"));
+  CHECK_THROWS_WITH(c.model.add_load(core::NodalForce{.node = -1}), Catch::Contains("does not exist"));
+}
+
+TEST_CASE("a beam with a zero stiffness is refused", "[statics][errors]") {
+  core::SectionStiffness C = test::cantilever_stiffness();
+  C.bending_2 = 0.0;
+  core::Model model;
+  CHECK_THROWS_WITH(model.add_beam({.centerline = test::straight_centerline(1.0, 2, 2), .stiffness = C}),
+                    Catch::Contains("bending stiffness EI2"));
+}
+
+TEST_CASE("a beam with fewer control points than p + 1 is refused", "[statics][errors]") {
+  const iga::KnotVector U({0, 0, 0, 1, 1, 1}, 2);
+  CHECK_THROWS_AS(iga::NurbsCurve<3>(U, iga::NurbsCurve<3>::Points::Zero(3, 2)), Error);
+}
+
+TEST_CASE("a load step that cannot converge reports the last converged load factor", "[statics][errors]") {
+  // Two Newton iterations per step cannot roll a cantilever into a circle in one step.
+  auto c = test::make_cantilever(8, 2);
+  c.model.add_load(core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, 2 * 3.14159 * 1e4)});
+  try {
+    solvers::solve_static(c.model, {.load_steps = 1, .max_iterations = 2, .max_cutbacks = 2});
+    FAIL("expected a ConvergenceError");
+  } catch (const solvers::ConvergenceError& error) {
+    CHECK_THAT(error.what(), Catch::Contains("last converged load factor"));
+    const double factor = error.last_converged_load_factor();
+    CHECK(factor >= 0.0);
+    CHECK(factor < 1.0);
+    // The state is the converged one: at factor 0 the reference, otherwise finite and bent.
+    CHECK(c.model.state().position[c.tip].allFinite());
+  }
+}
+
+TEST_CASE("an unsupported beam gives a singular tangent error", "[statics][errors]") {
+  core::Model model;
+  const int b = model.add_beam({.centerline = test::straight_centerline(1.0, 2, 2), .stiffness = test::cantilever_stiffness()});
+  model.add_load(core::NodalForce{.node = model.beam(b).node(2), .force = Eigen::Vector3d(0, 1, 0)});
+  CHECK_THROWS_WITH(solvers::solve_static(model), Catch::Contains("singular"));
+}
