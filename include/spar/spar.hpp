@@ -2,5 +2,8 @@
 /// \file
 /// The umbrella header: everything public in spar.
 
+#include <spar/core/core.hpp>
 #include <spar/error.hpp>
+#include <spar/iga/iga.hpp>
 #include <spar/lie/lie.hpp>
+#include <spar/solvers/solvers.hpp>

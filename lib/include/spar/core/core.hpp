@@ -1,0 +1,14 @@
+#pragma once
+/// \file
+/// spar::core — the model: configuration space, sections, the beam element, loads, assembly and
+/// results files.
+
+#include <spar/core/beam.hpp>
+#include <spar/core/beam_element.hpp>
+#include <spar/core/configuration.hpp>
+#include <spar/core/converged_chart.hpp>
+#include <spar/core/cross_section.hpp>
+#include <spar/core/hdf5_file.hpp>
+#include <spar/core/loads.hpp>
+#include <spar/core/model.hpp>
+#include <spar/core/sparse_assembly.hpp>

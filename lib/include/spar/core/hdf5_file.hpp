@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// A minimal HDF5 results file: named double datasets (vectors and matrices, row-major as
+/// printed) and string/number attributes on the root group. Every write is followed by an
+/// H5Fflush, so a run that dies leaves a readable file with everything written so far.
+/// The schema of each example's file is in docs/output.md.
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace spar::core {
+
+class Hdf5File {
+public:
+  /// Creates (truncates) the file; throws spar::Error if it cannot.
+  explicit Hdf5File(const std::string& path);
+  ~Hdf5File();
+  Hdf5File(const Hdf5File&) = delete;
+  Hdf5File& operator=(const Hdf5File&) = delete;
+
+  /// Writes `data` (rows × cols, stored row-major) as dataset `name`; groups in `name`
+  /// ("shape/positions") are created as needed.
+  void write(const std::string& name, const Eigen::MatrixXd& data);
+  /// A scalar attribute of the root group.
+  void write_attribute(const std::string& name, double value);
+  void write_attribute(const std::string& name, const std::string& value);
+
+private:
+  long long file_;  // hid_t, kept out of the header so users need no HDF5 include path
+  std::string path_;
+};
+
+}  // namespace spar::core

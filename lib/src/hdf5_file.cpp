@@ -1,0 +1,69 @@
+#include <spar/core/hdf5_file.hpp>
+#include <spar/error.hpp>
+
+#include <hdf5.h>
+
+#include <vector>
+
+namespace spar::core {
+
+namespace {
+
+void check(herr_t status, const std::string& what, const std::string& path) {
+  if (status < 0)
+    throw Error("HDF5 failed to " + what, "core::Hdf5File(" + path + ")",
+                "check that the output folder exists and is writable, and the disk is not full");
+}
+
+}  // namespace
+
+Hdf5File::Hdf5File(const std::string& path) : path_(path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
+  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  check(static_cast<herr_t>(file_ < 0 ? -1 : 0), "create the file", path);
+}
+
+Hdf5File::~Hdf5File() { H5Fclose(static_cast<hid_t>(file_)); }
+
+void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data) {
+  const hid_t file = static_cast<hid_t>(file_);
+  const hid_t link_properties = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(link_properties, 1);
+  const hsize_t dims[2] = {static_cast<hsize_t>(data.rows()), static_cast<hsize_t>(data.cols())};
+  const hid_t space = H5Screate_simple(data.cols() == 1 ? 1 : 2, dims, nullptr);
+  const hid_t set = H5Dcreate2(file, name.c_str(), H5T_NATIVE_DOUBLE, space, link_properties,
+                               H5P_DEFAULT, H5P_DEFAULT);
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = data;
+  const herr_t status =
+      set < 0 ? -1 : H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data());
+  if (set >= 0) H5Dclose(set);
+  H5Sclose(space);
+  H5Pclose(link_properties);
+  check(status, "write dataset " + name, path_);
+  check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", path_);
+}
+
+void Hdf5File::write_attribute(const std::string& name, double value) {
+  const hid_t file = static_cast<hid_t>(file_);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t attribute = H5Acreate2(file, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+  const herr_t status = attribute < 0 ? -1 : H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value);
+  if (attribute >= 0) H5Aclose(attribute);
+  H5Sclose(space);
+  check(status, "write attribute " + name, path_);
+}
+
+void Hdf5File::write_attribute(const std::string& name, const std::string& value) {
+  const hid_t file = static_cast<hid_t>(file_);
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.size() + 1);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t attribute = H5Acreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+  const herr_t status = attribute < 0 ? -1 : H5Awrite(attribute, type, value.c_str());
+  if (attribute >= 0) H5Aclose(attribute);
+  H5Sclose(space);
+  H5Tclose(type);
+  check(status, "write attribute " + name, path_);
+}
+
+}  // namespace spar::core

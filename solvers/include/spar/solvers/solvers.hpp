@@ -1,0 +1,6 @@
+#pragma once
+/// \file
+/// spar::solvers — sparse linear solvers and the nonlinear statics solver.
+
+#include <spar/solvers/linear_solver.hpp>
+#include <spar/solvers/static_solver.hpp>
