@@ -11,6 +11,7 @@ packages=(
   libhdf5-dev               # results files
   catch2                    # tests (v2)
   libbenchmark-dev          # bench/
+  python3 python3-matplotlib  # the examples' plot scripts
 )
 
 missing=()

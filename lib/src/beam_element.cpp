@@ -226,15 +226,26 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
 
   // H_y is filled in its upper block triangle; complete it.
   H_y.triangularView<Eigen::StrictlyLower>() = H_y.transpose();
-  // J (n × n): Δ → y, applied as H_Δ = Jᵀ H_y J with J's sparse block structure.
-  ElementMatrix J = ElementMatrix::Zero(n, n);
-  for (int I = 0; I < k; ++I) J.block<3, 3>(3 * I, 6 * I).setIdentity();
-  J.block<3, 3>(3 * k, 3).setIdentity();
-  for (int I = 1; I < k; ++I) {
-    J.block<3, 3>(3 * (k + I), 6 * I + 3) = d_psi_d_own[I];
-    J.block<3, 3>(3 * (k + I), 3) = d_psi_d_first[I];
+  // H_Δ = Jᵀ H_y J with J (Δ → y) block sparse: Δ-block 2I (translation of node I) ← y-block I;
+  // 2I + 1 (rotation of node I ≥ 1) ← y-block k + I through T⁻¹(ψ_I); 1 (rotation of node 0)
+  // ← y-block k and every y-block k + I through −T⁻ᵀ(ψ_I). First HJ = H_y J, then Jᵀ HJ.
+  ElementMatrix HJ(n, n);
+  HJ.middleCols<3>(3) = H_y.middleCols<3>(3 * k);
+  for (int I = 0; I < k; ++I) {
+    HJ.middleCols<3>(6 * I) = H_y.middleCols<3>(3 * I);
+    if (I == 0) continue;
+    HJ.middleCols<3>(3).noalias() += H_y.middleCols<3>(3 * (k + I)) * d_psi_d_first[I];
+    HJ.middleCols<3>(6 * I + 3).noalias() = H_y.middleCols<3>(3 * (k + I)) * d_psi_d_own[I];
   }
-  result.stiffness.noalias() = J.transpose() * H_y * J;
+  ElementMatrix& K = result.stiffness;
+  K.resize(n, n);
+  K.middleRows<3>(3) = HJ.middleRows<3>(3 * k);
+  for (int I = 0; I < k; ++I) {
+    K.middleRows<3>(6 * I) = HJ.middleRows<3>(3 * I);
+    if (I == 0) continue;
+    K.middleRows<3>(3).noalias() += d_psi_d_first[I].transpose() * HJ.middleRows<3>(3 * (k + I));
+    K.middleRows<3>(6 * I + 3).noalias() = d_psi_d_own[I].transpose() * HJ.middleRows<3>(3 * (k + I));
+  }
   // Second-order terms of ψ_I(Δφ_0, Δφ_I) contracted with λ = ∂Π/∂ψ_I (B10).
   for (int I = 1; I < k; ++I) {
     const Vector3 lambda = g_y.segment<3>(3 * (k + I));

@@ -3,6 +3,8 @@
 // against central finite differences on random large deformations (rotations up to 3 rad).
 #include <spar/core/beam.hpp>
 #include <spar/core/beam_element.hpp>
+#include <spar/iga/circular_arc.hpp>
+#include <spar/iga/knot_operations.hpp>
 #include <spar/lie/lie.hpp>
 
 #include <catch2/catch.hpp>
@@ -223,4 +225,48 @@ TEST_CASE("strains and energy are objective under a superposed rigid rotation", 
       CHECK((a.internal_force.segment<3>(6 * I + 3) - b.internal_force.segment<3>(6 * I + 3)).norm() <= 1e-13);
     }
   }
+}
+
+TEST_CASE("a curved beam of NURBS arcs is stress-free in its reference and under rigid motion",
+          "[gebt]") {
+  // A quarter circle of radius 2 (rational quadratic, non-unit weights) refined to 6 elements.
+  const iga::NurbsCurve<3> arc = iga::h_refine(iga::quarter_circle<3>(2.0), 6).curve;
+  core::Configuration reference;
+  const core::GeometricallyExactBeam beam({.centerline = arc, .stiffness = test::generic_stiffness()},
+                                          reference);
+  test::RandomRotations random(12);
+  const Eigen::Matrix3d Q = lie::exp(2.0 * random.axis());
+  core::Configuration moved = reference;
+  for (int k = 0; k < moved.node_count(); ++k) {
+    moved.position[k] = Q * reference.position[k] + Eigen::Vector3d(-1.0, 0.5, 2.0);
+    moved.rotation[k] = Q * reference.rotation[k];
+  }
+  for (int e = 0; e < beam.element_count(); ++e) {
+    core::BeamElementResult at_rest, after_motion;
+    core::evaluate_beam_element(beam, e, reference, core::BeamEvaluation::force, at_rest);
+    core::evaluate_beam_element(beam, e, moved, core::BeamEvaluation::force, after_motion);
+    CHECK(at_rest.internal_force.norm() == 0.0);
+    CHECK(after_motion.internal_force.norm() <= 1e-14);
+  }
+  // The section frame follows the arc: A₁ is tangent to the circle at the ends.
+  CHECK((beam.rotation_at(reference, 0.0).col(0) - Eigen::Vector3d::UnitY()).norm() <= 1e-14);
+  CHECK((beam.rotation_at(reference, 1.0).col(0) + Eigen::Vector3d::UnitX()).norm() <= 1e-14);
+}
+
+TEST_CASE("the curved beam's stiffness is the exact Hessian", "[gebt]") {
+  const iga::NurbsCurve<3> arc = iga::h_refine(iga::quarter_circle<3>(1.5), 3).curve;
+  core::Configuration reference;
+  const core::GeometricallyExactBeam beam({.centerline = arc, .stiffness = test::generic_stiffness()},
+                                          reference);
+  const core::Configuration q = deform(reference, 13);
+  core::BeamElementResult r;
+  core::evaluate_beam_element(beam, 1, q, core::BeamEvaluation::force_and_stiffness, r);
+  const int n = static_cast<int>(r.internal_force.size());
+  Eigen::MatrixXd fd(n, n);
+  for (int i = 0; i < n; ++i) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+    d(i) = fd_step;
+    fd.col(i) = (chart_gradient(beam, 1, q, d) - chart_gradient(beam, 1, q, -d)) / (2 * fd_step);
+  }
+  CHECK(relative(Eigen::MatrixXd(r.stiffness), fd) <= fd_tolerance);
 }
