@@ -200,6 +200,10 @@ void SparsePattern::scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd
       values[*position++] += transpose_of_K ? K(i, j) : K_transpose_position(j, i);
 }
 
+// Colouring rather than `omp atomic` adds: measured with bench_solvers (200 blocks of 24 × 24,
+// 2 threads), the scatter alone took 79 µs coloured against 210 µs with atomics (137 µs serial);
+// with a beam-like element kernel both assemble in ~0.7 ms (1.05 ms serial). Colouring also
+// makes the sums' order fixed, so a parallel run reproduces the serial one bit for bit.
 void SparsePattern::assemble(const BlockCompute& compute, AssemblyExecution execution) {
   set_zero();
   const bool parallel = execution == AssemblyExecution::parallel;
