@@ -174,7 +174,8 @@ public:
   double closest_point(const Point& x, double u_guess) const {
     constexpr const char* where = "iga::NurbsCurve::closest_point";
     knots_.find_span(u_guess);
-    if (!x.allFinite()) throw Error("the point has a NaN or infinite coordinate", where, "");
+    if (!x.allFinite())
+      throw Error("the point has a NaN or infinite coordinate", where, "give a finite point");
     const double first = knots_.first(), last = knots_.last();
     double u = u_guess;
     for (int iteration = 0; iteration < 100; ++iteration) {
@@ -184,7 +185,7 @@ public:
       const double scale = std::max({x.norm(), D.col(0).norm(), 1e-300});
       const double speed = D.col(1).norm();
       const double f = D.col(1).dot(r);
-      // Point coincidence and zero cosine (The NURBS Book eqs. 6.4).
+      // The NURBS Book §6.1 convergence tests: point coincidence and zero cosine.
       if (distance <= 1e-15 * scale || std::abs(f) <= 1e-15 * speed * distance) return u;
       const double curvature_term = D.col(2).dot(r) + speed * speed;
       double step = curvature_term > 0.0 ? -f / curvature_term : -f / (speed * speed);
@@ -193,7 +194,7 @@ public:
         step *= 0.5;
         next = std::clamp(u + step, first, last);
       }
-      // Parameter step too small to move the point (The NURBS Book eq. 6.5).
+      // §6.1: the parameter step no longer moves the point.
       if (std::abs(next - u) * speed <= 1e-15 * scale) return next;
       u = next;
     }
