@@ -1,0 +1,72 @@
+#pragma once
+/// \file
+/// Where a joint grips the model: a point fixed in a node's material frame, or a fixed point of
+/// the ground (docs/joints.md §1), and the bookkeeping that maps a joint's nodes to the column
+/// blocks of its Jacobian.
+
+#include <spar/core/configuration.hpp>
+
+#include <Eigen/Core>
+
+#include <string_view>
+#include <vector>
+
+namespace spar::joints {
+
+/// A point fixed in a node's material frame (node ≥ 0: p = x + R·offset, offset material), or a
+/// fixed inertial point of the ground (node = −1: p = offset, offset inertial).
+struct Attachment {
+  int node = -1;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+
+  bool on_ground() const { return node < 0; }
+};
+
+/// The attachment of node `node` at the inertial point `point` of configuration q0: its material
+/// offset is R0ᵀ(point − x0). With node = −1, the ground point `point`. Raises spar::Error when
+/// the node does not exist in q0.
+Attachment attach_at(int node, const Eigen::Vector3d& point, const core::Configuration& q0);
+
+/// A node as a joint sees it: its global index (−1: the ground) and the index of its six-column
+/// block in the joint's Jacobian, i.e. its position in Constraint::nodes() (−1: the ground).
+struct JointFrame {
+  int node = -1;
+  int block = -1;
+
+  bool on_ground() const { return node < 0; }
+  /// The first of the node's three translation columns in the joint's Jacobian.
+  int translation_column() const { return core::dofs_per_node * block; }
+  /// The first of the node's three rotation columns in the joint's Jacobian.
+  int rotation_column() const { return core::dofs_per_node * block + 3; }
+  /// The node's material angular velocity Ω in the model's global velocity vector (ẋ, Ω per node).
+  Eigen::Vector3d angular_velocity(const Eigen::VectorXd& velocity) const {
+    return velocity.segment<3>(core::dofs_per_node * node + 3);
+  }
+};
+
+/// The frames of a joint between two attachments and the node list of the joint (a's node first).
+struct JointFrames {
+  JointFrame a;
+  JointFrame b;
+  std::vector<int> nodes;
+};
+
+/// Checks that `node` is −1 (ground) or a node of q0; raises spar::Error naming `where` otherwise.
+void check_node(int node, const core::Configuration& q0, std::string_view where);
+
+/// The frames of a joint between attachments a and b, after checking that both nodes exist in
+/// q0, that at least one attachment is on a node, and that the two are not on the same node.
+/// Raises spar::Error naming `where` otherwise.
+JointFrames joint_frames(const Attachment& a, const Attachment& b, const core::Configuration& q0,
+                         std::string_view where);
+
+/// The frame of a joint acting on a single node (which must exist in q0 and not be the ground):
+/// block 0. Raises spar::Error naming `where` otherwise.
+JointFrame single_node_frame(int node, const core::Configuration& q0, std::string_view where);
+
+/// `direction` / ‖direction‖, or a spar::Error naming `where` and the argument `name` when it is
+/// zero or not finite.
+Eigen::Vector3d unit_vector(const Eigen::Vector3d& direction, std::string_view name,
+                            std::string_view where);
+
+}  // namespace spar::joints

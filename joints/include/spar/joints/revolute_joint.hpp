@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// Revolute joint (hinge): two attached points coincide and a hinge axis stays common to both
+/// frames (docs/joints.md §2.2).
+
+#include <spar/joints/attachment.hpp>
+#include <spar/joints/constraint.hpp>
+#include <spar/joints/point_kinematics.hpp>
+#include <spar/joints/vector_kinematics.hpp>
+
+#include <array>
+#include <vector>
+
+namespace spar::joints {
+
+/// Φ₁…₃ = p_a − p_b, Φ₄ = (R_a u_a)·(R_b v_b1), Φ₅ = (R_a u_a)·(R_b v_b2) (docs/joints.md eq. J18):
+/// the hinge axis n (inertial, at q0) is carried by a as u_a = R_a0ᵀ n and the two unit vectors
+/// n₁, n₂ ⊥ n by b as v_bi = R_b0ᵀ nᵢ (on the ground: the inertial vectors themselves), so
+/// Φ₄,₅ = 0 at q0 and the relative rotation about n is free.
+class RevoluteJoint final : public Constraint {
+ public:
+  /// Raises spar::Error for a zero or non-finite axis, a node not in q0, two ground attachments
+  /// or two attachments on the same node.
+  RevoluteJoint(const Attachment& a, const Attachment& b, const Eigen::Vector3d& axis,
+                const core::Configuration& q0);
+
+  int equation_count() const override { return 5; }
+  const std::vector<int>& nodes() const override { return nodes_; }
+
+  /// Φ = (p_a − p_b, d_a·d_b1, d_a·d_b2).
+  void value(const core::Configuration& q, double t,
+             Eigen::Ref<Eigen::VectorXd> phi) const override;
+  /// Rows 1–3 as SphericalJoint (eq. J6), rows 4–5 the dot-product rows (eq. J13).
+  void jacobian(const core::Configuration& q, double t,
+                Eigen::Ref<Eigen::MatrixXd> B) const override;
+  /// The sum of eq. J7 for λ₁…₃ and eq. J14 for λ₄, λ₅.
+  void multiplier_tangent(const core::Configuration& q, double t,
+                          const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                          Eigen::Ref<Eigen::MatrixXd> K) const override;
+  /// Rows 1–3 eq. J8, rows 4–5 eq. J15.
+  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                          Eigen::Ref<Eigen::VectorXd> c) const override;
+
+ private:
+  RevoluteJoint(const Attachment& a, const Attachment& b, const Eigen::Vector3d& axis,
+                const JointFrames& frames, const core::Configuration& q0);
+
+  std::vector<int> nodes_;
+  PointCoincidence points_;
+  std::array<DotProduct, 2> axis_products_;
+};
+
+}  // namespace spar::joints

@@ -1,0 +1,72 @@
+// The joints' evaluation functions allocate nothing: every global operator new in this test
+// executable is counted, and a batch of value/jacobian/multiplier_tangent/acceleration_terms/
+// time_derivative calls on every joint must leave the counter unchanged.
+#include <spar/joints/joints.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include "constraint_checks.hpp"
+
+namespace {
+std::atomic<long> allocations{0};
+}
+
+void* operator new(std::size_t size) {
+  ++allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace spar;
+
+TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
+  test::RandomRotations random(701);
+  const core::Configuration q0 = test::random_configuration(3, random);
+  const Eigen::Vector3d point = test::random_vector(random, 2);
+  const Eigen::Vector3d axis = random.axis();
+  const joints::Attachment a = joints::attach_at(0, point, q0);
+  const joints::Attachment b = joints::attach_at(2, point, q0);
+  std::vector<std::unique_ptr<joints::Constraint>> constraints;
+  constraints.push_back(std::make_unique<joints::SphericalJoint>(a, b, q0));
+  constraints.push_back(std::make_unique<joints::RevoluteJoint>(a, b, axis, q0));
+  constraints.push_back(std::make_unique<joints::ClampJoint>(a, b, q0));
+  constraints.push_back(std::make_unique<joints::PrismaticJoint>(a, point, axis, true, q0));
+  constraints.push_back(std::make_unique<joints::PositionDriver>(
+      a, axis, joints::TimeFunction::polynomial({0.0, 1.0, 2.0}), q0));
+  constraints.push_back(
+      std::make_unique<joints::AngleDriver>(1, axis, joints::TimeFunction::linear(2.0), q0));
+
+  const core::Configuration q = test::random_configuration(3, random);
+  const Eigen::VectorXd velocity = Eigen::VectorXd::Constant(q.dof_count(), 0.5);
+  const Eigen::VectorXd lambda = Eigen::VectorXd::Constant(6, 0.25);
+  Eigen::VectorXd phi(6);
+  Eigen::MatrixXd B(6, 12);
+  Eigen::MatrixXd K(12, 12);
+  double sink = 0;
+
+  const long before = allocations.load();
+  for (const auto& constraint : constraints) {
+    const Eigen::Index m = constraint->equation_count();
+    const Eigen::Index n = 6 * static_cast<Eigen::Index>(constraint->nodes().size());
+    constraint->value(q, 0.3, phi.head(m));
+    constraint->jacobian(q, 0.3, B.topLeftCorner(m, n));
+    constraint->multiplier_tangent(q, 0.3, lambda.head(m), K.topLeftCorner(n, n));
+    sink += phi.head(m).sum() + B.topLeftCorner(m, n).sum() + K.topLeftCorner(n, n).sum();
+    constraint->acceleration_terms(q, velocity, 0.3, phi.head(m));
+    sink += phi.head(m).sum();
+    constraint->time_derivative(q, 0.3, phi.head(m));
+    sink += phi.head(m).sum();
+  }
+  const long after = allocations.load();
+  CHECK(after == before);
+  CHECK(std::isfinite(sink));
+}
