@@ -43,8 +43,10 @@ GeometricallyExactBeam::GeometricallyExactBeam(const BeamParameters& parameters,
     : centerline_(parameters.centerline),
       degree_(parameters.centerline.degree()),
       control_point_count_(static_cast<int>(parameters.centerline.control_points().cols())),
-      stiffness_(parameters.stiffness) {
+      stiffness_(parameters.stiffness),
+      inertia_(parameters.inertia) {
   stiffness_.validate();
+  inertia_.validate();
   if (degree_ < 1)
     throw Error("a beam needs degree p >= 1, got " + std::to_string(degree_), where,
                 "use a linear or higher-degree centerline");
@@ -117,6 +119,15 @@ void GeometricallyExactBeam::build_elements(int quadrature_points) {
         }
         element.gauss_points.push_back(gp);
       }
+    }
+    // Consistent mass coefficients with the points of part 0 (p + 1 points, or two for p = 1:
+    // exact for N_I N_J of degree 2p on a uniformly parameterized centerline).
+    element.mass_coefficients = Eigen::MatrixXd::Zero(degree_ + 1, degree_ + 1);
+    for (const BeamGaussPoint& gp : element.gauss_points) {
+      if (gp.part != 0) continue;
+      for (int I = 0; I <= degree_; ++I)
+        for (int J = 0; J <= degree_; ++J)
+          element.mass_coefficients(I, J) += gp.weight * gp.shape[I] * gp.shape[J];
     }
     elements_.push_back(std::move(element));
   }

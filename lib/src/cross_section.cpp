@@ -1,6 +1,8 @@
 #include <spar/core/cross_section.hpp>
 #include <spar/error.hpp>
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -117,6 +119,31 @@ void SectionStiffness::validate() const {
   if (!(bending_2 * bending_3 > bending_23 * bending_23))
     throw Error("the bending block is not positive definite (EI2 EI3 <= EI23^2)", where,
                 "check EI2, EI3 and the coupling EI23");
+}
+
+SectionInertia SectionInertia::from(const Material& material, const CrossSection& section) {
+  material.validate();
+  section.validate();
+  const double rho = material.density;
+  SectionInertia inertia;
+  inertia.mass_per_length = rho * section.area;
+  inertia.rotary << section.polar_moment(), 0.0, 0.0,  //
+      0.0, section.second_moment_2, -section.product_moment,   //
+      0.0, -section.product_moment, section.second_moment_3;
+  inertia.rotary *= rho;
+  return inertia;
+}
+
+void SectionInertia::validate() const {
+  const char* where = "core::SectionInertia";
+  if (!(mass_per_length >= 0.0) || !std::isfinite(mass_per_length))
+    throw Error("mass per length must be non-negative, got " + std::to_string(mass_per_length),
+                where, "give rho*A in kg/m (0 for a massless beam)");
+  if (!rotary.allFinite() || (rotary - rotary.transpose()).norm() > 1e-12 * rotary.norm() ||
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(rotary).eigenvalues().minCoeff() <
+          -1e-12 * rotary.norm())
+    throw Error("the rotary inertia is not symmetric positive semi-definite", where,
+                "give rho*J of the section (SectionInertia::from)");
 }
 
 }  // namespace spar::core

@@ -1,6 +1,9 @@
 #include <spar/core/model.hpp>
 #include <spar/error.hpp>
 #include <spar/lie/hat.hpp>
+#include <spar/lie/log.hpp>
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <string>
@@ -41,11 +44,61 @@ void Model::check_node(int node, const char* where) const {
                 where, "use a node of a beam, e.g. beam.node(control_point)");
 }
 
-void Model::add_load(const Load& load) {
+int Model::add_rigid_body(const RigidBodyParameters& p) {
+  const char* where = "core::Model::add_rigid_body";
+  if (!(p.mass > 0.0) || !std::isfinite(p.mass))
+    throw Error("rigid body mass must be positive, got " + std::to_string(p.mass), where,
+                "give the mass in kg");
+  if (!p.inertia.allFinite() || (p.inertia - p.inertia.transpose()).norm() > 1e-12 * p.inertia.norm() ||
+      !(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(p.inertia).eigenvalues().minCoeff() > 0.0))
+    throw Error("rigid body inertia tensor is not symmetric positive definite", where,
+                "give the inertia about the centre of mass in the body frame (kg m^2)");
+  lie::check_rotation(p.rotation, where);
+  const int node = reference_.add_node(p.center_of_mass, p.rotation);
+  state_.add_node(p.center_of_mass, p.rotation);
+  rigid_bodies_.push_back({node, p.mass, p.inertia});
+  return rigid_body_count() - 1;
+}
+
+const RigidBody& Model::rigid_body(int b) const {
+  if (b < 0 || b >= rigid_body_count())
+    throw Error("rigid body " + std::to_string(b) + " does not exist", "core::Model::rigid_body",
+                "use an index returned by add_rigid_body");
+  return rigid_bodies_[b];
+}
+
+double Model::load_factor(int load, double t) const {
+  return load_histories_[load] ? load_histories_[load](t) : 1.0;
+}
+
+Eigen::VectorXd Model::gravity_force() const {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(dof_count());
+  for (int b = 0; b < beam_count(); ++b) {
+    NodalContribution c;
+    const double rho_a = beams_[b].inertia().mass_per_length;
+    load_contribution(*this, DistributedForce{.beam = b, .force_per_length = rho_a * gravity_},
+                      state_, 1.0, false, c);
+    for (std::size_t I = 0; I < c.nodes.size(); ++I)
+      f.segment<dofs_per_node>(dofs_per_node * c.nodes[I]) += c.force.segment<dofs_per_node>(dofs_per_node * I);
+  }
+  for (const RigidBody& body : rigid_bodies_)
+    f.segment<3>(dofs_per_node * body.node) += body.mass * gravity_;
+  return f;
+}
+
+double Model::gravity_potential(const Configuration& q) const {
+  const Eigen::VectorXd f = gravity_force();
+  double potential = 0.0;
+  for (int k = 0; k < q.node_count(); ++k) potential -= f.segment<3>(dofs_per_node * k).dot(q.position[k]);
+  return potential;
+}
+
+void Model::add_load(const Load& load, LoadHistory history) {
   if (const auto* f = std::get_if<NodalForce>(&load)) check_node(f->node, "core::Model::add_load");
   if (const auto* m = std::get_if<NodalMoment>(&load)) check_node(m->node, "core::Model::add_load");
   if (const auto* d = std::get_if<DistributedForce>(&load)) beam(d->beam);
   loads_.push_back(load);
+  load_histories_.push_back(std::move(history));
 }
 
 void Model::fix(int node, Fix what) {
@@ -57,16 +110,36 @@ void Model::fix(int node, Fix what) {
   fixed_dofs_.erase(std::unique(fixed_dofs_.begin(), fixed_dofs_.end()), fixed_dofs_.end());
 }
 
-std::vector<PatternBlock> Model::pattern_blocks() const {
-  std::vector<PatternBlock> blocks;
-  for (const GeometricallyExactBeam& beam : beams_)
-    for (int e = 0; e < beam.element_count(); ++e)
-      blocks.push_back(PatternBlock::element(
-          node_dofs(beam.node(beam.element(e).first_control_point), beam.degree() + 1)));
-  for (const Load& load : loads_)
-    if (load_has_tangent(load))
-      blocks.push_back(PatternBlock::element(node_dofs(std::get<NodalMoment>(load).node, 1)));
+std::vector<ModelBlock> Model::blocks() const {
+  std::vector<ModelBlock> blocks;
+  for (int b = 0; b < beam_count(); ++b)
+    for (int e = 0; e < beams_[b].element_count(); ++e)
+      blocks.push_back({ModelBlock::Kind::beam_element, b, e});
+  for (int r = 0; r < rigid_body_count(); ++r) blocks.push_back({ModelBlock::Kind::rigid_body, r, 0});
+  for (int l = 0; l < static_cast<int>(loads_.size()); ++l)
+    if (load_has_tangent(loads_[l])) blocks.push_back({ModelBlock::Kind::load, l, 0});
   return blocks;
+}
+
+std::vector<PatternBlock> Model::pattern_blocks() const {
+  std::vector<PatternBlock> pattern;
+  for (const ModelBlock& block : blocks()) {
+    switch (block.kind) {
+      case ModelBlock::Kind::beam_element: {
+        const GeometricallyExactBeam& beam = beams_[block.index];
+        pattern.push_back(PatternBlock::element(
+            node_dofs(beam.node(beam.element(block.element).first_control_point), beam.degree() + 1)));
+        break;
+      }
+      case ModelBlock::Kind::rigid_body:
+        pattern.push_back(PatternBlock::element(node_dofs(rigid_bodies_[block.index].node, 1)));
+        break;
+      case ModelBlock::Kind::load:
+        pattern.push_back(PatternBlock::element(node_dofs(std::get<NodalMoment>(loads_[block.index]).node, 1)));
+        break;
+    }
+  }
+  return pattern;
 }
 
 void beam_element_contribution(const Model& model, int b, int e, const Configuration& q,
@@ -80,6 +153,7 @@ void beam_element_contribution(const Model& model, int b, int e, const Configura
   out.nodes.resize(beam.degree() + 1);
   for (int I = 0; I <= beam.degree(); ++I) out.nodes[I] = first + I;
   out.force = result.internal_force;
+  out.energy = result.strain_energy;
   if (!with_tangent) return;
   out.tangent = result.stiffness;
   add_local_tangent_correction(out.force, out.tangent);

@@ -3,10 +3,11 @@
 #include <spar/core/converged_chart.hpp>
 #include <spar/lie/exp.hpp>
 
+#include "round_off.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace spar::solvers {
@@ -14,20 +15,6 @@ namespace spar::solvers {
 namespace {
 
 using core::dofs_per_node;
-
-/// What one block of the pattern is: a beam element or a load with a tangent.
-struct BlockSource {
-  int beam = -1, element = -1, load = -1;
-};
-
-std::vector<BlockSource> block_sources(const core::Model& model) {
-  std::vector<BlockSource> sources;
-  for (int b = 0; b < model.beam_count(); ++b)
-    for (int e = 0; e < model.beam(b).element_count(); ++e) sources.push_back({b, e, -1});
-  for (int l = 0; l < static_cast<int>(model.loads().size()); ++l)
-    if (core::load_has_tangent(model.loads()[l])) sources.push_back({-1, -1, l});
-  return sources;
-}
 
 void scatter(const core::NodalContribution& c, double sign, Eigen::VectorXd& global) {
   for (std::size_t I = 0; I < c.nodes.size(); ++I)
@@ -48,10 +35,10 @@ public:
   NewtonStep(core::Model& model, const StaticOptions& options)
       : model_(model),
         options_(options),
-        sources_(block_sources(model)),
+        blocks_(model.blocks()),
         pattern_(model.dof_count(), model.pattern_blocks()),
         solver_(make_linear_solver(options.linear_solver)),
-        contributions_(sources_.size()),
+        contributions_(blocks_.size()),
         fixed_(model.dof_count(), 0) {
     for (int dof : model.fixed_dofs()) fixed_[dof] = 1;
     solver_->analyze(pattern_.matrix());
@@ -71,7 +58,7 @@ public:
       const double scale = std::max(free_norm(internal, fixed_), free_norm(external, fixed_));
       const double residual_norm = free_norm(residual, fixed_);
       if (!std::isfinite(residual_norm)) return false;
-      const double allowed = std::max(options_.residual_tolerance * scale, round_off_floor());
+      const double allowed = std::max(options_.residual_tolerance * scale, detail::residual_round_off_floor(pattern_.matrix(), model_.state()));
       if (iteration > 0 && residual_norm <= allowed &&
           increment_norm <= options_.increment_tolerance) {
         step = {load_factor, iteration, residual_norm, increment_norm};
@@ -95,39 +82,39 @@ public:
   }
 
 private:
-  /// The residual that round-off alone leaves at an exact solution: the stiffness times a
-  /// perturbation of the positions by 64 ulps of the model's size, 64 ε max|K_ii| max(1, |x|).
-  /// Without it a small load on a stiff structure (EA ε ≫ load) could never converge.
-  double round_off_floor() const {
-    double length = 1.0;
-    for (const Eigen::Vector3d& x : model_.state().position) length = std::max(length, x.norm());
-    const double diagonal = pattern_.matrix().diagonal().cwiseAbs().maxCoeff();
-    return 64 * std::numeric_limits<double>::epsilon() * diagonal * length;
-  }
-
   /// The chart's residual pieces f_int, λ f_ext and the tangent K_φ into the pattern.
   void assemble(double load_factor, const std::vector<Eigen::Vector3d>& phi,
                 Eigen::VectorXd& internal, Eigen::VectorXd& external) {
     const core::Configuration& q = model_.state();
     pattern_.assemble(
         [&](int id, Eigen::MatrixXd& K) {
-          const BlockSource& s = sources_[id];
+          const core::ModelBlock& block = blocks_[id];
           core::NodalContribution& c = contributions_[id];
-          if (s.load < 0)
-            core::beam_element_contribution(model_, s.beam, s.element, q, true, c);
-          else
-            core::load_contribution(model_, model_.loads()[s.load], q, load_factor, true, c);
+          switch (block.kind) {
+            case core::ModelBlock::Kind::beam_element:
+              core::beam_element_contribution(model_, block.index, block.element, q, true, c);
+              break;
+            case core::ModelBlock::Kind::rigid_body:  // no stiffness, no force in statics
+              c.nodes = {model_.rigid_body(block.index).node};
+              c.force = Eigen::VectorXd::Zero(dofs_per_node);
+              c.tangent = Eigen::MatrixXd::Zero(dofs_per_node, dofs_per_node);
+              break;
+            case core::ModelBlock::Kind::load:  // an external force: it enters with a minus sign
+              core::load_contribution(model_, model_.loads()[block.index], q, load_factor, true, c);
+              c.force = -c.force;
+              c.tangent = -c.tangent;
+              break;
+          }
           core::pull_back_to_converged_chart(phi, c);
-          if (s.load < 0)
-            K = c.tangent;
-          else
-            K = -c.tangent;
+          K = c.tangent;
         },
         options_.assembly);
     internal.setZero();
     external.setZero();
-    for (std::size_t id = 0; id < sources_.size(); ++id)
-      scatter(contributions_[id], 1.0, sources_[id].load < 0 ? internal : external);
+    for (std::size_t id = 0; id < blocks_.size(); ++id) {
+      const bool is_load = blocks_[id].kind == core::ModelBlock::Kind::load;
+      scatter(contributions_[id], is_load ? -1.0 : 1.0, is_load ? external : internal);
+    }
     core::NodalContribution load_force;
     for (const core::Load& load : model_.loads()) {
       if (core::load_has_tangent(load)) continue;
@@ -139,7 +126,7 @@ private:
 
   core::Model& model_;
   const StaticOptions& options_;
-  std::vector<BlockSource> sources_;
+  std::vector<core::ModelBlock> blocks_;
   core::SparsePattern pattern_;
   std::unique_ptr<LinearSolver> solver_;
   std::vector<core::NodalContribution> contributions_;

@@ -28,6 +28,8 @@ struct BeamParameters {
   iga::NurbsCurve<3> centerline;
   /// Section stiffness C (003 eq. 15).
   SectionStiffness stiffness;
+  /// Section inertia per unit length (003 eqs. 30–31); zero for a massless (statics) beam.
+  SectionInertia inertia;
   /// Reference rotation of each control point (columns: A₁ along the beam, A₂, A₃ section axes).
   /// When empty they are built from the centerline's unit tangent at the Greville abscissae and
   /// `section_axis_hint` (A₃ = the hint made orthogonal to A₁).
@@ -53,6 +55,8 @@ struct BeamGaussPoint {
 struct BeamElement {
   int first_control_point = 0;
   std::vector<BeamGaussPoint> gauss_points;
+  /// m_IJ = ∫ N_I N_J dS over the element (k × k): the consistent mass coefficients.
+  Eigen::MatrixXd mass_coefficients;
 };
 
 class GeometricallyExactBeam {
@@ -74,6 +78,7 @@ public:
   /// selective integration, C without the shear block and the shear block alone).
   const std::vector<Eigen::Matrix<double, 6, 6>>& constitutive() const { return constitutive_; }
   const SectionStiffness& stiffness() const { return stiffness_; }
+  const SectionInertia& inertia() const { return inertia_; }
 
   /// The point x(u) and the rotation R(u) of the centerline at parameter u in a configuration,
   /// by the same interpolation as the strains (003 eqs. 39, 40, 42).
@@ -89,6 +94,7 @@ private:
   int control_point_count_;
   int first_node_ = 0;
   SectionStiffness stiffness_;
+  SectionInertia inertia_;
   std::vector<Eigen::Matrix<double, 6, 6>> constitutive_;
   std::vector<BeamElement> elements_;
 };

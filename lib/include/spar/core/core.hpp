@@ -9,6 +9,7 @@
 #include <spar/core/converged_chart.hpp>
 #include <spar/core/cross_section.hpp>
 #include <spar/core/hdf5_file.hpp>
+#include <spar/core/inertia.hpp>
 #include <spar/core/loads.hpp>
 #include <spar/core/model.hpp>
 #include <spar/core/sparse_assembly.hpp>

@@ -67,4 +67,17 @@ struct SectionStiffness {
   void validate() const;
 };
 
+/// The inertia of a section per unit length (003 eqs. 30–31): mass ρA and the rotary inertia
+/// tensor in the material frame, ρ [[I₂ + I₃, 0, 0], [0, I₂, −I₂₃], [0, −I₂₃, I₃]] (003's J with
+/// its I₃₃ = our I₂ = ∫ξ₃² dA).
+struct SectionInertia {
+  double mass_per_length = 0.0;                              ///< ρA [kg/m]
+  Eigen::Matrix3d rotary = Eigen::Matrix3d::Zero();          ///< ρJ [kg m]
+
+  static SectionInertia from(const Material& material, const CrossSection& section);
+  /// Throws spar::Error unless ρA ≥ 0 and the rotary inertia is symmetric positive
+  /// semi-definite.
+  void validate() const;
+};
+
 }  // namespace spar::core

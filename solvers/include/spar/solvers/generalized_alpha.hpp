@@ -1,0 +1,118 @@
+#pragma once
+/// \file
+/// The Lie-group generalized-α method for index-3 constrained systems (Arnold & Brüls 2007;
+/// Brüls, Cardona & Arnold 2012; 003 eq. 49), with the iteration-matrix strategies of 003 §5.1
+/// (docs/dynamics.md).
+///
+/// Equations: M v̇ + f_gyr(v) + f_int(q) − f_ext(q, t) + Bᵀλ = 0, Φ(q, t) = 0, with q in
+/// (R³ × SO(3))ⁿ, v = (ẋ, Ω) per node and B the constraint Jacobian in local increments.
+
+#include <spar/core/model.hpp>
+#include <spar/core/sparse_assembly.hpp>
+#include <spar/joints/constraint.hpp>
+#include <spar/solvers/linear_solver.hpp>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace spar::solvers {
+
+/// How the Newton iterations of a step get their iteration matrix.
+enum class IterationMatrix {
+  update,    ///< full Newton: assembled and factorized every iteration
+  frozen,    ///< 003's strategy: the rotation–rotation blocks J_θ of mass, gyroscopic and stiffness
+             ///< matrices taken at t = 0 and kept; the rest updated every iteration
+  modified,  ///< modified Newton: the whole factorization kept across iterations and steps until
+             ///< the contraction of the increments slows down
+};
+
+/// "update", "frozen" or "modified"; spar::Error listing them otherwise.
+IterationMatrix iteration_matrix_from_string(std::string_view name);
+std::string_view to_string(IterationMatrix strategy);
+
+/// α_m, α_f, γ, β from the spectral radius at infinite frequency ρ∞ ∈ [0, 1] (Chung & Hulbert
+/// 1993): α_m = (2ρ∞ − 1)/(ρ∞ + 1), α_f = ρ∞/(ρ∞ + 1), γ = ½ + α_f − α_m, β = ¼(γ + ½)².
+struct GeneralizedAlphaParameters {
+  double alpha_m = 0.0, alpha_f = 0.0, gamma = 0.5, beta = 0.25;
+  static GeneralizedAlphaParameters from_spectral_radius(double rho_infinity);
+};
+
+struct DynamicOptions {
+  double time_step = 1e-3;
+  double spectral_radius = 0.9;  ///< ρ∞; 1 = no numerical dissipation
+  IterationMatrix iteration_matrix = IterationMatrix::update;
+  /// 003 §5.1: converged when ‖[Δq, h²βΔλ]‖² ≤ tolerance (Δq in m and rad)…
+  double tolerance = 1e-6;
+  /// …and the constraints hold, ‖Φ‖∞ ≤ constraint_tolerance…
+  double constraint_tolerance = 1e-10;
+  /// …and the dynamic residual is small: ‖r‖∞ ≤ residual_tolerance · (size of its terms).
+  double residual_tolerance = 1e-6;
+  int max_iterations = 25;
+  int max_cutbacks = 8;                      ///< halvings of a step that does not converge
+  double modified_newton_contraction = 0.5;  ///< refactorize when ‖Δ_k‖ > this · ‖Δ_{k−1}‖
+  LinearSolverKind linear_solver = LinearSolverKind::klu;
+  core::AssemblyExecution assembly = core::AssemblyExecution::serial;
+};
+
+/// What a run did.
+struct DynamicCounters {
+  long steps = 0;                 ///< completed steps (a cut step counts its sub-steps)
+  long newton_iterations = 0;     ///< linear solves
+  long jtheta_evaluations = 0;    ///< iterations that evaluated the rotational block J_θ
+  long factorizations = 0;        ///< numeric factorizations
+  long residual_evaluations = 0;
+  long cutbacks = 0;
+  double wall_seconds = 0.0;
+};
+
+struct Energies {
+  double kinetic = 0.0;
+  double strain = 0.0;
+  double gravity = 0.0;  ///< gravity potential
+  double total() const { return kinetic + strain + gravity; }
+};
+
+using ConstraintList = std::vector<std::unique_ptr<joints::Constraint>>;
+
+class GeneralizedAlpha {
+public:
+  /// Integrates `model` (whose state() is the initial configuration) with `constraints`. Throws
+  /// spar::Error for invalid options.
+  GeneralizedAlpha(core::Model& model, ConstraintList constraints, const DynamicOptions& options);
+  ~GeneralizedAlpha();
+  GeneralizedAlpha(const GeneralizedAlpha&) = delete;
+  GeneralizedAlpha& operator=(const GeneralizedAlpha&) = delete;
+
+  /// Sets a node's initial velocity (before the first step): ẋ inertial, Ω material.
+  void set_velocity(int node, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular);
+  /// Computes consistent initial accelerations and multipliers from M v̇ + Bᵀλ = −f and
+  /// B v̇ = −c. Done by the first step() if not called.
+  void initialize();
+  /// Advances by one time step (in halves, recursively, if Newton fails). Throws spar::Error
+  /// naming the step, the time and the likely cause when even max_cutbacks halvings fail; the
+  /// state is then the last converged one.
+  void step();
+
+  double time() const;
+  const core::Configuration& configuration() const;
+  const Eigen::VectorXd& velocity() const;
+  const Eigen::VectorXd& acceleration() const;
+  /// The Lagrange multipliers λ (constraint forces), constraint by constraint.
+  const Eigen::VectorXd& multipliers() const;
+  const DynamicCounters& counters() const;
+  int multiplier_count() const;
+  /// Newton iterations of the last completed step.
+  int last_step_iterations() const;
+  /// ‖Φ(q, t)‖∞ now.
+  double constraint_residual() const;
+  Energies energies() const;
+
+private:
+  struct Implementation;
+  std::unique_ptr<Implementation> impl_;
+};
+
+}  // namespace spar::solvers
