@@ -12,4 +12,6 @@
 #include <spar/core/inertia.hpp>
 #include <spar/core/loads.hpp>
 #include <spar/core/model.hpp>
+#include <spar/core/progress_bar.hpp>
+#include <spar/core/results_writer.hpp>
 #include <spar/core/sparse_assembly.hpp>

@@ -1,0 +1,91 @@
+#pragma once
+/// \file
+/// The time-history results file of a simulation: one HDF5 file of extendible datasets (one row
+/// per step) and an XDMF sidecar that lets ParaView play the deforming beams as an animation.
+/// Steps are buffered and written in blocks, each followed by H5Fflush and a rewrite of the
+/// sidecar, so a run that dies keeps every step up to its last flush and both files still open.
+/// The schema (dataset names, shapes, units) is in docs/output.md, "Time histories".
+
+#include <spar/core/configuration.hpp>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spar::core {
+
+/// What every step of a run holds; fixed when the file is created.
+struct ResultsLayout {
+  /// Nodes of the configuration: positions n×3, rotations as unit quaternions n×4
+  /// (w, x, y, z with w ≥ 0) and, when `velocities` is set, velocities n×6 (ẋ inertial, Ω material).
+  int node_count = 0;
+  /// Whether steps carry node velocities (6 per node).
+  bool velocities = true;
+  /// Lagrange multipliers λ per step (0: none).
+  int multiplier_count = 0;
+  /// Per-step scalars, e.g. kinetic_energy, strain_energy, total_energy, constraint_residual,
+  /// newton_iterations, factorizations, step_size.
+  std::vector<std::string> scalar_names;
+  /// Per-step 3-vectors, e.g. a material point's position.
+  std::vector<std::string> probe_names;
+  /// Per beam, the number of centerline points sampled at every step (≥ 2; the XDMF polylines).
+  std::vector<int> centerline_points;
+};
+
+/// One step's data, borrowed for the duration of ResultsWriter::append.
+struct ResultsStep {
+  double time = 0;
+  const Configuration* configuration = nullptr;   ///< node_count nodes, or nullptr if node_count = 0
+  const Eigen::VectorXd* velocity = nullptr;      ///< 6 per node, or nullptr if the layout has none
+  const Eigen::VectorXd* multipliers = nullptr;   ///< multiplier_count entries, or nullptr if 0
+  std::vector<double> scalars;                    ///< in scalar_names order
+  std::vector<Eigen::Vector3d> probes;            ///< in probe_names order
+  std::vector<Eigen::MatrixXd> centerlines;       ///< per beam, centerline_points[k] × 3
+};
+
+/// Writes a run's time histories into `<name>.h5` and its XDMF sidecar `<name>.xmf`.
+/// The file is not locked (HDF5 file locking is off), so it can be read while the run goes on:
+/// after each flush both files are complete up to the flushed step.
+class ResultsWriter {
+public:
+  /// Creates (truncates) the HDF5 file and every dataset of `layout` with zero steps, and writes
+  /// an empty sidecar. Steps are written in blocks of `flush_every` (≥ 1). Throws spar::Error
+  /// naming the path and the reason if the layout is invalid or the file cannot be created.
+  ResultsWriter(const std::string& h5_path, ResultsLayout layout, int flush_every = 100);
+  /// Closes the file (see close()); reports a failure on stderr instead of throwing.
+  ~ResultsWriter();
+  ResultsWriter(ResultsWriter&&) noexcept;
+  ResultsWriter& operator=(ResultsWriter&&) noexcept;
+  ResultsWriter(const ResultsWriter&) = delete;
+  ResultsWriter& operator=(const ResultsWriter&) = delete;
+
+  /// Run metadata: a scalar attribute of the root group (replaced if it exists), flushed at once.
+  void write_attribute(const std::string& name, double value);
+  void write_attribute(const std::string& name, const std::string& value);
+  /// A constant dataset `name` (rows × cols, row-major; a column vector is stored 1-D), e.g. the
+  /// reference geometry or the solver counters at the end; groups in `name` are created. Throws
+  /// spar::Error if `name` already exists (every time-history name is taken from the start).
+  void write_constant(const std::string& name, const Eigen::MatrixXd& data);
+  /// Buffers one step after checking it against the layout (spar::Error naming the field and the
+  /// expected size) and that time increases; writes the block when flush_every steps are buffered.
+  void append(const ResultsStep& step);
+  /// Writes the buffered steps, H5Fflush-es the file and rewrites the sidecar, so both are
+  /// readable now with every appended step.
+  void flush();
+  /// Flushes and closes the file; later calls do nothing, append/write_* then throw.
+  void close();
+  /// Steps appended so far (written or still buffered).
+  int steps_written() const;
+  /// Steps on disk (as of the last flush).
+  int steps_flushed() const;
+  /// The sidecar's path: the HDF5 path with its extension replaced by `.xmf`.
+  const std::string& xdmf_path() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace spar::core

@@ -1,0 +1,570 @@
+#include <spar/core/results_writer.hpp>
+#include <spar/error.hpp>
+#include <spar/lie/quaternion.hpp>
+
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <utility>
+
+namespace spar::core {
+
+namespace {
+
+/// Closes an HDF5 identifier when it goes out of scope (also on a throw).
+class Hid {
+public:
+  Hid(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Hid() {
+    if (id_ >= 0) close_(id_);
+  }
+  Hid(const Hid&) = delete;
+  Hid& operator=(const Hid&) = delete;
+  operator hid_t() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+/// One time-history dataset of `steps × shape` doubles, extended by every block write.
+struct Series {
+  std::string name;            ///< absolute path in the file, e.g. "/positions"
+  std::string description;     ///< stored as the dataset's `description` attribute
+  std::vector<hsize_t> shape;  ///< per-step shape, {} for one scalar per step
+  hid_t dataset = H5I_INVALID_HID;
+  std::vector<double> buffer;  ///< steps not yet written, row-major
+
+  hsize_t values_per_step() const {
+    hsize_t count = 1;
+    for (hsize_t extent : shape) count *= extent;
+    return count;
+  }
+  /// {steps, shape...}: the dimensions of `steps` rows.
+  std::vector<hsize_t> dims(hsize_t steps) const {
+    std::vector<hsize_t> result{steps};
+    result.insert(result.end(), shape.begin(), shape.end());
+    return result;
+  }
+  void push(const double* values, std::size_t count) { buffer.insert(buffer.end(), values, values + count); }
+};
+
+/// Steps per chunk: one block (flush_every steps), capped at about 64 KiB per chunk, so a block
+/// write fills whole chunks and a chunk stays small enough for the default chunk cache.
+hsize_t chunk_steps(hsize_t values_per_step, int flush_every) {
+  const hsize_t cap = std::max<hsize_t>(1, 65536 / (sizeof(double) * values_per_step));
+  return std::min<hsize_t>(cap, static_cast<hsize_t>(flush_every));
+}
+
+/// The shortest decimal text that reads back as the same double.
+std::string format_double(double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+/// `text` with the XML special characters replaced by entities.
+std::string xml_escape(const std::string& text) {
+  std::string result;
+  for (char c : text) {
+    switch (c) {
+      case '&': result += "&amp;"; break;
+      case '<': result += "&lt;"; break;
+      case '>': result += "&gt;"; break;
+      case '"': result += "&quot;"; break;
+      default: result += c;
+    }
+  }
+  return result;
+}
+
+/// Why `path` cannot be created, as far as the file system tells.
+std::string creation_failure_reason(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path folder = fs::absolute(path, ec).parent_path();
+  if (!fs::exists(folder, ec)) return "its folder " + folder.string() + " does not exist";
+  if (!fs::is_directory(folder, ec)) return folder.string() + " is not a folder";
+  if (access(folder.c_str(), W_OK) != 0) return "its folder " + folder.string() + " is not writable";
+  if (fs::is_directory(path, ec)) return "it is a folder";
+  return "HDF5 refused to create it (the file may be open in another program, or the disk full)";
+}
+
+/// A `name`: non-empty, no '/' (it becomes a dataset name), unique within `seen`.
+void check_name(const std::string& name, const char* field, std::set<std::string>& seen, const std::string& where) {
+  if (name.empty() || name.find('/') != std::string::npos)
+    throw Error(std::string("layout.") + field + " holds the name \"" + name + "\", which is empty or contains '/'",
+                where, "use plain names such as kinetic_energy");
+  if (!seen.insert(name).second)
+    throw Error(std::string("layout.") + field + " holds \"" + name + "\" twice", where,
+                "give every " + std::string(field) + " entry a distinct name");
+}
+
+/// Checks the layout's counts and names; throws spar::Error naming the field.
+void check_layout(const ResultsLayout& layout, int flush_every, const std::string& where) {
+  if (layout.node_count < 0 || layout.multiplier_count < 0)
+    throw Error("layout.node_count = " + std::to_string(layout.node_count) + " and layout.multiplier_count = " +
+                    std::to_string(layout.multiplier_count) + " must not be negative",
+                where, "pass the model's node and multiplier counts");
+  if (flush_every < 1)
+    throw Error("flush_every = " + std::to_string(flush_every) + " must be at least 1", where,
+                "pass the number of steps per block write, e.g. 100");
+  std::set<std::string> scalars, probes;
+  for (const std::string& name : layout.scalar_names) check_name(name, "scalar_names", scalars, where);
+  for (const std::string& name : layout.probe_names) check_name(name, "probe_names", probes, where);
+  for (std::size_t k = 0; k < layout.centerline_points.size(); ++k)
+    if (layout.centerline_points[k] < 2)
+      throw Error("layout.centerline_points[" + std::to_string(k) + "] = " + std::to_string(layout.centerline_points[k]) +
+                      " is below 2",
+                  where, "sample each beam's centerline at 2 points or more (e.g. 10 per element + 1)");
+}
+
+/// `path` with its extension replaced by `.xmf`.
+std::string sidecar_path(const std::string& path) {
+  return std::filesystem::path(path).replace_extension(".xmf").string();
+}
+
+/// What the sidecar describes: the HDF5 file's name (relative to the sidecar) and its steps.
+struct XdmfInput {
+  std::string h5_name;
+  const ResultsLayout* layout;
+  const std::vector<double>* times;  ///< the flushed steps' times
+};
+
+/// A HyperSlab DataItem: step `step`'s `rows × 3` block (the first 3 columns) of dataset `name`,
+/// whose shape is `steps × rows × columns`.
+std::string step_slab(const XdmfInput& in, const std::string& name, std::size_t step, int rows, int columns,
+                      const std::string& indent) {
+  const std::string r = std::to_string(rows);
+  return indent + "<DataItem ItemType=\"HyperSlab\" Dimensions=\"" + r + " 3\" Type=\"HyperSlab\">\n" + indent +
+         " <DataItem Dimensions=\"3 3\" NumberType=\"Int\" Format=\"XML\">" + std::to_string(step) + " 0 0 1 1 1 1 " + r + " 3</DataItem>\n" +
+         indent + " <DataItem Dimensions=\"" + std::to_string(in.times->size()) + " " + r + " " + std::to_string(columns) +
+         "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" + in.h5_name + ":" + name + "</DataItem>\n" + indent +
+         "</DataItem>\n";
+}
+
+/// Beam k at one step: a polyline through its sampled centerline points.
+std::string beam_grid(const XdmfInput& in, std::size_t step, std::size_t k) {
+  const std::string p = std::to_string(in.layout->centerline_points[k]);
+  const std::string beam = std::to_string(k);
+  return "    <Grid Name=\"beam" + beam + "\" GridType=\"Uniform\">\n" +
+         "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"1\" NodesPerElement=\"" + p + "\">\n" +
+         "      <DataItem Dimensions=\"1 " + p + "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + in.h5_name +
+         ":/xdmf/polyline" + beam + "</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
+         step_slab(in, "/centerlines/beam" + beam, step, in.layout->centerline_points[k], 3, "      ") +
+         "     </Geometry>\n    </Grid>\n";
+}
+
+/// The nodes at one step: a point cloud with the nodes' translational velocity when recorded.
+std::string nodes_grid(const XdmfInput& in, std::size_t step) {
+  const int n = in.layout->node_count;
+  std::string grid = "    <Grid Name=\"nodes\" GridType=\"Uniform\">\n     <Topology TopologyType=\"Polyvertex\" "
+                     "NumberOfElements=\"" + std::to_string(n) + "\" NodesPerElement=\"1\">\n" +
+                     "      <DataItem Dimensions=\"" + std::to_string(n) +
+                     "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + in.h5_name +
+                     ":/xdmf/polyvertex</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
+                     step_slab(in, "/positions", step, n, 3, "      ") + "     </Geometry>\n";
+  if (in.layout->velocities)
+    grid += "     <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n" +
+            step_slab(in, "/velocities", step, n, 6, "      ") + "     </Attribute>\n";
+  return grid + "    </Grid>\n";
+}
+
+/// The XDMF document: a temporal collection with one spatial collection per flushed step
+/// (its time, one polyline grid per beam, the nodes), every array a HyperSlab of the HDF5 file.
+std::string xdmf_document(const XdmfInput& in) {
+  std::string xml = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"3.0\">\n"
+                    " <Domain>\n  <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (std::size_t step = 0; step < in.times->size(); ++step) {
+    xml += "   <Grid Name=\"step" + std::to_string(step) + "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n" +
+           "    <Time Value=\"" + format_double((*in.times)[step]) + "\"/>\n";
+    for (std::size_t k = 0; k < in.layout->centerline_points.size(); ++k) xml += beam_grid(in, step, k);
+    if (in.layout->node_count > 0) xml += nodes_grid(in, step);
+    xml += "   </Grid>\n";
+  }
+  return xml + "  </Grid>\n </Domain>\n</Xdmf>\n";
+}
+
+}  // namespace
+
+struct ResultsWriter::Impl {
+  std::string path;
+  std::string xdmf_path;
+  ResultsLayout layout;
+  int flush_every;
+  hid_t file = H5I_INVALID_HID;
+  std::vector<Series> series;  ///< /time first; the others in append order
+  int positions = -1, quaternions = -1, velocities = -1, multipliers = -1;
+  int first_scalar = 0, first_probe = 0, first_centerline = 0;
+  std::vector<double> times;   ///< every appended step's time
+  int appended = 0;
+  int flushed = 0;
+
+  std::string where(const std::string& function) const { return "core::ResultsWriter::" + function + "(" + path + ")"; }
+
+  void check(herr_t status, const std::string& what, const std::string& function) const {
+    if (status < 0)
+      throw Error("HDF5 failed to " + what, where(function),
+                  "check that the output folder is writable and the disk is not full");
+  }
+
+  void require_open(const std::string& function) const {
+    if (file < 0)
+      throw Error("the results file is closed", where(function), "call " + function + " before close()");
+  }
+
+  /// Adds a series of `shape` per step and returns its index.
+  int add_series(std::string name, std::string description, std::vector<hsize_t> shape) {
+    series.push_back(Series{std::move(name), std::move(description), std::move(shape)});
+    return static_cast<int>(series.size()) - 1;
+  }
+
+  /// The series of the layout, in the order append() fills them.
+  void plan_series() {
+    const auto n = static_cast<hsize_t>(layout.node_count);
+    add_series("/time", "time of each step, s", {});
+    if (n > 0) {
+      positions = add_series("/positions", "node positions (inertial frame), m", {n, 3});
+      quaternions = add_series("/quaternions", "node rotations R as unit quaternions (w, x, y, z), w >= 0", {n, 4});
+      if (layout.velocities)
+        velocities = add_series("/velocities",
+                                "node velocities: x dot (inertial, m/s) then Omega (material, rad/s)", {n, 6});
+    }
+    if (layout.multiplier_count > 0)
+      multipliers = add_series("/multipliers", "Lagrange multipliers of the constraints",
+                               {static_cast<hsize_t>(layout.multiplier_count)});
+    first_scalar = static_cast<int>(series.size());
+    for (const std::string& name : layout.scalar_names) add_series("/scalars/" + name, "per-step scalar " + name, {});
+    first_probe = static_cast<int>(series.size());
+    for (const std::string& name : layout.probe_names) add_series("/probes/" + name, "probe " + name + ", m", {3});
+    first_centerline = static_cast<int>(series.size());
+    for (std::size_t k = 0; k < layout.centerline_points.size(); ++k)
+      add_series("/centerlines/beam" + std::to_string(k), "sampled centerline points of beam " + std::to_string(k) + ", m",
+                 {static_cast<hsize_t>(layout.centerline_points[k]), 3});
+  }
+
+  void create_file() {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
+    const Hid access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+#if H5_VERSION_GE(1, 10, 7)
+    // No lock: the file can be read (after a flush) while the run goes on.
+    H5Pset_file_locking(access, false, true);
+#endif
+    file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
+    if (file < 0)
+      throw Error("cannot create the results file " + path + ": " + creation_failure_reason(path),
+                  "core::ResultsWriter(" + path + ")", "pass a path in an existing, writable folder");
+  }
+
+  /// A link-creation property list that creates missing intermediate groups.
+  static hid_t intermediate_groups() {
+    const hid_t properties = H5Pcreate(H5P_LINK_CREATE);
+    H5Pset_create_intermediate_group(properties, 1);
+    return properties;
+  }
+
+  void create_dataset(Series& s) {
+    const std::vector<hsize_t> dims = s.dims(0);
+    std::vector<hsize_t> max_dims = dims, chunk = s.dims(chunk_steps(s.values_per_step(), flush_every));
+    max_dims[0] = H5S_UNLIMITED;
+    const int rank = static_cast<int>(dims.size());
+    const Hid space(H5Screate_simple(rank, dims.data(), max_dims.data()), H5Sclose);
+    const Hid creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+    H5Pset_chunk(creation, rank, chunk.data());
+    const Hid links(intermediate_groups(), H5Pclose);
+    s.dataset = H5Dcreate2(file, s.name.c_str(), H5T_IEEE_F64LE, space, links, creation, H5P_DEFAULT);
+    check(s.dataset < 0 ? -1 : 0, "create dataset " + s.name, "ResultsWriter");
+    set_attribute(s.dataset, "description", s.description, "ResultsWriter");
+  }
+
+  /// An int dataset (`dims`) for the sidecar's topologies.
+  void write_ints(const std::string& name, const std::vector<int>& values, const std::vector<hsize_t>& dims) {
+    const Hid space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+    const Hid links(intermediate_groups(), H5Pclose);
+    const Hid set(H5Dcreate2(file, name.c_str(), H5T_STD_I32LE, space, links, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+    check(set.valid() ? H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) : -1,
+          "write dataset " + name, "ResultsWriter");
+  }
+
+  /// Point indices 0 … count−1 of each sidecar topology: one polyline per beam, the nodes.
+  void write_topologies() {
+    auto indices = [](int count) {
+      std::vector<int> result(static_cast<std::size_t>(count));
+      for (int i = 0; i < count; ++i) result[static_cast<std::size_t>(i)] = i;
+      return result;
+    };
+    for (std::size_t k = 0; k < layout.centerline_points.size(); ++k) {
+      const int p = layout.centerline_points[k];
+      write_ints("/xdmf/polyline" + std::to_string(k), indices(p), {1, static_cast<hsize_t>(p)});
+    }
+    if (layout.node_count > 0)
+      write_ints("/xdmf/polyvertex", indices(layout.node_count), {static_cast<hsize_t>(layout.node_count)});
+  }
+
+  /// Writes a scalar attribute on `object`, replacing one of the same name.
+  void set_attribute(hid_t object, const std::string& name, hid_t type, const void* value, const std::string& function) {
+    if (H5Aexists(object, name.c_str()) > 0) check(H5Adelete(object, name.c_str()), "replace attribute " + name, function);
+    const Hid space(H5Screate(H5S_SCALAR), H5Sclose);
+    const Hid attribute(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    check(attribute.valid() ? H5Awrite(attribute, type, value) : -1, "write attribute " + name, function);
+  }
+
+  void set_attribute(hid_t object, const std::string& name, const std::string& value, const std::string& function) {
+    const Hid type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type, value.size() + 1);
+    set_attribute(object, name, type, value.c_str(), function);
+  }
+
+  /// Appends the buffered steps to every dataset.
+  void write_block() {
+    const auto start = static_cast<hsize_t>(flushed);
+    const auto count = static_cast<hsize_t>(appended - flushed);
+    if (count == 0) return;
+    for (Series& s : series) {
+      const std::vector<hsize_t> total = s.dims(start + count), rows = s.dims(count);
+      std::vector<hsize_t> offset(total.size(), 0);
+      offset[0] = start;
+      check(H5Dset_extent(s.dataset, total.data()), "extend dataset " + s.name, "flush");
+      const Hid file_space(H5Dget_space(s.dataset), H5Sclose);
+      const Hid memory_space(H5Screate_simple(static_cast<int>(rows.size()), rows.data(), nullptr), H5Sclose);
+      check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, offset.data(), nullptr, rows.data(), nullptr),
+            "select the new rows of " + s.name, "flush");
+      check(H5Dwrite(s.dataset, H5T_NATIVE_DOUBLE, memory_space, file_space, H5P_DEFAULT, s.buffer.data()),
+            "write dataset " + s.name, "flush");
+      s.buffer.clear();
+    }
+    flushed = appended;
+  }
+
+  /// Rewrites the sidecar through a temporary file, so a reader never sees it half written.
+  void write_xdmf() const {
+    const std::vector<double> flushed_times(times.begin(), times.begin() + flushed);
+    const XdmfInput input{xml_escape(std::filesystem::path(path).filename().string()), &layout, &flushed_times};
+    const std::string temporary = xdmf_path + ".tmp";
+    {
+      std::ofstream out(temporary, std::ios::trunc);
+      out << xdmf_document(input);
+      if (!out)
+        throw Error("cannot write the XDMF sidecar " + temporary, where("flush"),
+                    "check that the output folder is writable and the disk is not full");
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, xdmf_path, ec);
+    if (ec)
+      throw Error("cannot rename " + temporary + " to " + xdmf_path + ": " + ec.message(), where("flush"),
+                  "check that the output folder is writable");
+  }
+
+  /// Closes every dataset and the file; returns false if HDF5 reported a failure.
+  bool release() {
+    bool ok = true;
+    for (Series& s : series)
+      if (s.dataset >= 0) {
+        ok = H5Dclose(s.dataset) >= 0 && ok;
+        s.dataset = H5I_INVALID_HID;
+      }
+    ok = H5Fclose(file) >= 0 && ok;
+    file = H5I_INVALID_HID;
+    return ok;
+  }
+
+  // ---- append: checks, then one push per series in plan_series() order ----
+
+  [[noreturn]] void size_error(const std::string& field, std::size_t got, const std::string& expected,
+                               const std::string& fix) const {
+    throw Error("step." + field + " has " + std::to_string(got) + " entries, expected " + expected,
+                where("append") + " at step " + std::to_string(appended), fix);
+  }
+
+  void check_step(const ResultsStep& step) const {
+    if (!std::isfinite(step.time) || (appended > 0 && !(step.time > times.back())))
+      throw Error("step.time = " + format_double(step.time) + " is not finite or not after the previous step's " +
+                      (appended > 0 ? format_double(times.back()) : std::string("-")),
+                  where("append") + " at step " + std::to_string(appended),
+                  "append converged steps only, in increasing time");
+    const auto n = static_cast<std::size_t>(layout.node_count);
+    const Configuration* q = step.configuration;
+    if (n > 0 && (q == nullptr || q->position.size() != n || q->rotation.size() != n))
+      size_error("configuration nodes", q == nullptr ? 0 : std::min(q->position.size(), q->rotation.size()),
+                 std::to_string(n) + " (layout.node_count)", "pass the model's configuration");
+    const Eigen::VectorXd* v = step.velocity;
+    if (velocities >= 0 && (v == nullptr || static_cast<std::size_t>(v->size()) != 6 * n))
+      size_error("velocity", v == nullptr ? 0 : static_cast<std::size_t>(v->size()),
+                 "6 per node = " + std::to_string(6 * n), "pass 6 entries per node (x dot, Omega)");
+    if (velocities < 0 && v != nullptr)
+      size_error("velocity", static_cast<std::size_t>(v->size()), "none (layout.velocities is false or no nodes)",
+                 "set layout.velocities, or pass velocity = nullptr");
+    const auto m = static_cast<std::size_t>(layout.multiplier_count);
+    const Eigen::VectorXd* lambda = step.multipliers;
+    const std::size_t lambda_size = lambda == nullptr ? 0 : static_cast<std::size_t>(lambda->size());
+    if (lambda_size != m)
+      size_error("multipliers", lambda_size, std::to_string(m) + " (layout.multiplier_count)",
+                 "pass the multiplier vector of the constraints, or fix layout.multiplier_count");
+    if (step.scalars.size() != layout.scalar_names.size())
+      size_error("scalars", step.scalars.size(), std::to_string(layout.scalar_names.size()) + " (layout.scalar_names)",
+                 "pass one value per scalar name, in the same order");
+    if (step.probes.size() != layout.probe_names.size())
+      size_error("probes", step.probes.size(), std::to_string(layout.probe_names.size()) + " (layout.probe_names)",
+                 "pass one point per probe name, in the same order");
+    check_centerlines(step);
+  }
+
+  void check_centerlines(const ResultsStep& step) const {
+    const std::vector<int>& points = layout.centerline_points;
+    if (step.centerlines.size() != points.size())
+      size_error("centerlines", step.centerlines.size(), std::to_string(points.size()) + " beams (layout.centerline_points)",
+                 "pass one sampled centerline per beam");
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Eigen::MatrixXd& c = step.centerlines[k];
+      if (c.rows() != points[k] || c.cols() != 3)
+        size_error("centerlines[" + std::to_string(k) + "]", static_cast<std::size_t>(c.size()),
+                   std::to_string(points[k]) + " × 3 (layout.centerline_points[" + std::to_string(k) +
+                       "] rows of x, y, z), got " + std::to_string(c.rows()) + " × " + std::to_string(c.cols()),
+                   "sample the beam at the layout's number of points");
+    }
+  }
+
+  void buffer_nodes(const ResultsStep& step) {
+    if (positions < 0) return;
+    const Configuration& q = *step.configuration;
+    for (int i = 0; i < layout.node_count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      series[static_cast<std::size_t>(positions)].push(q.position[k].data(), 3);
+      const Eigen::Quaterniond quaternion = lie::quaternion_from_rotation(q.rotation[k]);
+      const double wxyz[4] = {quaternion.w(), quaternion.x(), quaternion.y(), quaternion.z()};
+      series[static_cast<std::size_t>(quaternions)].push(wxyz, 4);
+    }
+    if (velocities >= 0)
+      series[static_cast<std::size_t>(velocities)].push(step.velocity->data(), static_cast<std::size_t>(step.velocity->size()));
+  }
+
+  void buffer_step(const ResultsStep& step) {
+    series[0].push(&step.time, 1);
+    buffer_nodes(step);
+    if (multipliers >= 0)
+      series[static_cast<std::size_t>(multipliers)].push(step.multipliers->data(),
+                                                          static_cast<std::size_t>(step.multipliers->size()));
+    for (std::size_t i = 0; i < step.scalars.size(); ++i)
+      series[static_cast<std::size_t>(first_scalar) + i].push(&step.scalars[i], 1);
+    for (std::size_t i = 0; i < step.probes.size(); ++i)
+      series[static_cast<std::size_t>(first_probe) + i].push(step.probes[i].data(), 3);
+    for (std::size_t k = 0; k < step.centerlines.size(); ++k) {
+      const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rows = step.centerlines[k];
+      series[static_cast<std::size_t>(first_centerline) + k].push(rows.data(), static_cast<std::size_t>(rows.size()));
+    }
+    times.push_back(step.time);
+  }
+};
+
+ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, int flush_every)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& impl = *impl_;
+  check_layout(layout, flush_every, "core::ResultsWriter(" + h5_path + ")");
+  impl.path = h5_path;
+  impl.xdmf_path = sidecar_path(h5_path);
+  impl.layout = std::move(layout);
+  impl.flush_every = flush_every;
+  impl.plan_series();
+  impl.create_file();
+  try {
+    for (Series& s : impl.series) impl.create_dataset(s);
+    impl.write_topologies();
+    impl.set_attribute(impl.file, "schema", "spar.results/1", "ResultsWriter");
+    flush();
+  } catch (...) {
+    impl.release();
+    throw;
+  }
+}
+
+ResultsWriter::~ResultsWriter() {
+  try {
+    close();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+  }
+}
+
+ResultsWriter::ResultsWriter(ResultsWriter&&) noexcept = default;
+ResultsWriter& ResultsWriter::operator=(ResultsWriter&& other) noexcept {
+  if (this != &other) {
+    ResultsWriter discarded(std::move(*this));  // closes the file this writer held
+    impl_ = std::move(other.impl_);
+  }
+  return *this;
+}
+
+void ResultsWriter::write_attribute(const std::string& name, double value) {
+  impl_->require_open("write_attribute");
+  impl_->set_attribute(impl_->file, name, H5T_NATIVE_DOUBLE, &value, "write_attribute");
+  impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
+}
+
+void ResultsWriter::write_attribute(const std::string& name, const std::string& value) {
+  impl_->require_open("write_attribute");
+  impl_->set_attribute(impl_->file, name, value, "write_attribute");
+  impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
+}
+
+void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixXd& data) {
+  Impl& impl = *impl_;
+  impl.require_open("write_constant");
+  if (H5Lexists(impl.file, name.c_str(), H5P_DEFAULT) > 0)
+    throw Error("the file already holds an object named " + name, impl.where("write_constant"),
+                "write each constant once, under a name not used by the time histories (docs/output.md)");
+  const hsize_t dims[2] = {static_cast<hsize_t>(data.rows()), static_cast<hsize_t>(data.cols())};
+  const Hid space(H5Screate_simple(data.cols() == 1 ? 1 : 2, dims, nullptr), H5Sclose);
+  const Hid links(Impl::intermediate_groups(), H5Pclose);
+  const Hid set(H5Dcreate2(impl.file, name.c_str(), H5T_IEEE_F64LE, space, links, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = data;
+  impl.check(set.valid() ? H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data()) : -1,
+             "write dataset " + name, "write_constant");
+  impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "write_constant");
+}
+
+void ResultsWriter::append(const ResultsStep& step) {
+  Impl& impl = *impl_;
+  impl.require_open("append");
+  impl.check_step(step);
+  impl.buffer_step(step);
+  ++impl.appended;
+  if (impl.appended - impl.flushed >= impl.flush_every) flush();
+}
+
+void ResultsWriter::flush() {
+  Impl& impl = *impl_;
+  impl.require_open("flush");
+  impl.write_block();
+  impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "flush");
+  impl.write_xdmf();
+}
+
+void ResultsWriter::close() {
+  if (!impl_ || impl_->file < 0) return;
+  std::exception_ptr failure;
+  try {
+    flush();
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  const bool released = impl_->release();
+  if (failure) std::rethrow_exception(failure);
+  impl_->check(released ? 0 : -1, "close the file", "close");
+}
+
+int ResultsWriter::steps_written() const { return impl_->appended; }
+
+int ResultsWriter::steps_flushed() const { return impl_->flushed; }
+
+const std::string& ResultsWriter::xdmf_path() const { return impl_->xdmf_path; }
+
+}  // namespace spar::core

@@ -1,0 +1,205 @@
+#include "output_fixtures.hpp"
+
+#include <spar/core/results_writer.hpp>
+#include <spar/error.hpp>
+#include <spar/lie/quaternion.hpp>
+
+#include <catch2/catch.hpp>
+
+using Catch::Matchers::Contains;
+using spar::core::ResultsLayout;
+using spar::core::ResultsWriter;
+using spar::test::DatasetContents;
+using spar::test::ReadOnlyFile;
+using spar::test::SampleStep;
+
+namespace {
+
+constexpr int sample_steps = 5;
+
+/// Every value is copied, not computed, so the round trip must be exact; the quaternions are
+/// computed by the same function on both sides.
+void check_round_trip(const ReadOnlyFile& file, int steps) {
+  const auto S = static_cast<hsize_t>(steps);
+  const DatasetContents time = file.read("/time"), positions = file.read("/positions"),
+                        quaternions = file.read("/quaternions"), velocities = file.read("/velocities"),
+                        multipliers = file.read("/multipliers"), tip = file.read("/probes/tip");
+  CHECK(time.shape == std::vector<hsize_t>{S});
+  CHECK(positions.shape == std::vector<hsize_t>{S, 3, 3});
+  CHECK(quaternions.shape == std::vector<hsize_t>{S, 3, 4});
+  CHECK(velocities.shape == std::vector<hsize_t>{S, 3, 6});
+  CHECK(multipliers.shape == std::vector<hsize_t>{S, 2});
+  CHECK(tip.shape == std::vector<hsize_t>{S, 3});
+  for (int k = 0; k < steps; ++k) {
+    const SampleStep sample(k);
+    const auto s = static_cast<std::size_t>(k);
+    CHECK(time.values[s] == sample.step.time);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Eigen::Quaterniond q = spar::lie::quaternion_from_rotation(sample.configuration.rotation[i]);
+      const double* stored_q = &quaternions.values[(s * 3 + i) * 4];
+      CHECK(stored_q[0] >= 0);
+      CHECK(Eigen::Vector4d(stored_q[0], stored_q[1], stored_q[2], stored_q[3]) == Eigen::Vector4d(q.w(), q.x(), q.y(), q.z()));
+      for (std::size_t c = 0; c < 3; ++c) CHECK(positions.values[(s * 3 + i) * 3 + c] == sample.configuration.position[i](static_cast<int>(c)));
+    }
+    for (std::size_t j = 0; j < 18; ++j) CHECK(velocities.values[s * 18 + j] == sample.velocity(static_cast<int>(j)));
+    for (std::size_t j = 0; j < 2; ++j) CHECK(multipliers.values[s * 2 + j] == sample.multipliers(static_cast<int>(j)));
+    CHECK(file.read("/scalars/kinetic_energy").values[s] == sample.step.scalars[0]);
+    CHECK(file.read("/scalars/newton_iterations").values[s] == sample.step.scalars[1]);
+    for (std::size_t c = 0; c < 3; ++c) CHECK(tip.values[s * 3 + c] == sample.step.probes[0](static_cast<int>(c)));
+    for (std::size_t beam = 0; beam < 2; ++beam) {
+      const DatasetContents centerline = file.read("/centerlines/beam" + std::to_string(beam));
+      const Eigen::MatrixXd& expected = sample.step.centerlines[beam];
+      REQUIRE(centerline.shape == std::vector<hsize_t>{S, static_cast<hsize_t>(expected.rows()), 3});
+      for (int p = 0; p < expected.rows(); ++p)
+        for (int c = 0; c < 3; ++c)
+          CHECK(centerline.values[(s * static_cast<std::size_t>(expected.rows()) + static_cast<std::size_t>(p)) * 3 +
+                                  static_cast<std::size_t>(c)] == expected(p, c));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("ResultsWriter round-trips every dataset whatever the block size", "[output]") {
+  const int flush_every = GENERATE(1, 2, sample_steps, 64);
+  const spar::test::ScratchFolder folder("round_trip_" + std::to_string(flush_every));
+  const std::string path = folder.file("run.h5");
+  {
+    ResultsWriter writer(path, spar::test::sample_layout(), flush_every);
+    writer.write_attribute("strategy", std::string("frozen"));
+    writer.write_attribute("h", 5e-4);
+    writer.write_attribute("h", 1e-4);  // replaced, not duplicated
+    for (int k = 0; k < sample_steps; ++k) {
+      writer.append(SampleStep(k).step);
+      CHECK(writer.steps_written() == k + 1);
+      CHECK(writer.steps_flushed() == (k + 1) / flush_every * flush_every);
+    }
+    writer.write_constant("counters/newton_iterations", Eigen::MatrixXd::Constant(1, 1, 42));
+    writer.write_constant("reference/centerline", Eigen::MatrixXd::Identity(4, 3));
+    writer.close();
+    CHECK(writer.steps_flushed() == sample_steps);
+    writer.close();  // idempotent
+  }
+  const ReadOnlyFile file(path);
+  check_round_trip(file, sample_steps);
+  CHECK(file.string_attribute("strategy") == "frozen");
+  CHECK(file.double_attribute("h") == 1e-4);
+  CHECK(file.string_attribute("schema") == "spar.results/1");
+  CHECK(file.read("counters/newton_iterations").values == std::vector<double>{42});
+  const DatasetContents reference = file.read("reference/centerline");
+  CHECK(reference.shape == std::vector<hsize_t>{4, 3});
+  CHECK(reference.values[0] == 1.0);
+  CHECK(reference.values[4] == 1.0);
+  CHECK(reference.values[1] == 0.0);
+  CHECK(file.read("/xdmf/polyline1").values == std::vector<double>{0, 1, 2, 3, 4});
+  CHECK(file.read("/xdmf/polyvertex").values == std::vector<double>{0, 1, 2});
+}
+
+TEST_CASE("ResultsWriter writes only the datasets of its layout", "[output]") {
+  const spar::test::ScratchFolder folder("minimal");
+  const std::string path = folder.file("minimal.h5");
+  ResultsLayout layout;
+  layout.scalar_names = {"total_energy"};
+  {
+    ResultsWriter writer(path, layout, 3);
+    for (int k = 0; k < 4; ++k) {
+      spar::core::ResultsStep step;
+      step.time = k;
+      step.scalars = {10.0 * k};
+      writer.append(step);
+    }
+  }  // the destructor flushes and closes
+  const ReadOnlyFile file(path);
+  CHECK(file.read("/time").values == std::vector<double>{0, 1, 2, 3});
+  CHECK(file.read("/scalars/total_energy").values == std::vector<double>{0, 10, 20, 30});
+  for (const char* absent : {"/positions", "/quaternions", "/velocities", "/multipliers", "/probes", "/centerlines"})
+    CHECK_FALSE(file.has(absent));
+}
+
+TEST_CASE("ResultsWriter rejects steps that do not match the layout", "[output]") {
+  const spar::test::ScratchFolder folder("validation");
+  ResultsWriter writer(folder.file("run.h5"), spar::test::sample_layout(), 2);
+  writer.append(SampleStep(0).step);
+  SampleStep sample(1);
+  spar::core::ResultsStep& step = sample.step;
+
+  SECTION("configuration") {
+    step.configuration = nullptr;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.configuration nodes") && Contains("expected 3"));
+  }
+  SECTION("velocity") {
+    const Eigen::VectorXd short_velocity = Eigen::VectorXd::Zero(12);
+    step.velocity = &short_velocity;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.velocity has 12 entries") && Contains("18"));
+    step.velocity = nullptr;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.velocity has 0 entries"));
+  }
+  SECTION("multipliers") {
+    step.multipliers = nullptr;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.multipliers has 0 entries, expected 2"));
+  }
+  SECTION("scalars and probes") {
+    step.scalars.pop_back();
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.scalars has 1 entries, expected 2"));
+    step.scalars.push_back(0);
+    step.probes.push_back(Eigen::Vector3d::Zero());
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.probes has 2 entries, expected 1"));
+  }
+  SECTION("centerlines") {
+    step.centerlines[1] = Eigen::MatrixXd::Zero(4, 3);
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerlines[1]") && Contains("5 × 3") && Contains("got 4 × 3"));
+    step.centerlines.pop_back();
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerlines has 1 entries, expected 2 beams"));
+  }
+  SECTION("time") {
+    step.time = SampleStep(0).step.time;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.time") && Contains("not after the previous step"));
+  }
+  // A rejected step leaves nothing behind: the writer goes on with the next valid one.
+  CHECK(writer.steps_written() == 1);
+  writer.append(SampleStep(1).step);
+  CHECK(writer.steps_written() == 2);
+  CHECK(writer.steps_flushed() == 2);
+}
+
+TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]") {
+  const spar::test::ScratchFolder folder("errors");
+  ResultsLayout layout = spar::test::sample_layout();
+
+  SECTION("a folder that does not exist") {
+    const std::string path = folder.file("missing/run.h5");
+    CHECK_THROWS_AS(ResultsWriter(path, layout), spar::Error);
+    CHECK_THROWS_WITH(ResultsWriter(path, layout), Contains(path) && Contains("does not exist"));
+  }
+  SECTION("layout") {
+    layout.centerline_points[0] = 1;
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("a.h5"), layout), Contains("layout.centerline_points[0] = 1"));
+    layout = spar::test::sample_layout();
+    layout.scalar_names.push_back("kinetic_energy");
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("b.h5"), layout), Contains("\"kinetic_energy\" twice"));
+    layout = spar::test::sample_layout();
+    layout.probe_names = {"a/b"};
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("c.h5"), layout), Contains("contains '/'"));
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("d.h5"), spar::test::sample_layout(), 0), Contains("flush_every = 0"));
+  }
+  SECTION("names taken and a closed file") {
+    ResultsWriter writer(folder.file("run.h5"), layout);
+    CHECK_THROWS_WITH(writer.write_constant("time", Eigen::MatrixXd::Zero(1, 1)), Contains("already holds an object named time"));
+    writer.close();
+    CHECK_THROWS_WITH(writer.append(SampleStep(0).step), Contains("closed"));
+    CHECK_THROWS_WITH(writer.write_attribute("x", 1.0), Contains("closed"));
+  }
+}
+
+TEST_CASE("A moved ResultsWriter keeps writing the same file", "[output]") {
+  const spar::test::ScratchFolder folder("move");
+  const std::string path = folder.file("run.h5");
+  {
+    ResultsWriter first(path, spar::test::sample_layout(), 10);
+    first.append(SampleStep(0).step);
+    ResultsWriter second = std::move(first);
+    second.append(SampleStep(1).step);
+  }
+  const ReadOnlyFile file(path);
+  check_round_trip(file, 2);
+}
