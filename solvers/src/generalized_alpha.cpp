@@ -384,8 +384,16 @@ struct GeneralizedAlpha::Implementation {
 
   // One step -------------------------------------------------------------------------------------
 
+  /// The Newton starting point of a step. `extrapolated` is Brüls et al.'s (v̇_{n+1} = 0, which
+  /// carries a_n into the step); `velocity_only` picks v̇_{n+1} so that the motion starts as
+  /// q_n ⊕ h v_n, the better guess after an impulsive start (a concentrated moment on a section
+  /// of tiny rotary inertia has a huge, short-lived initial acceleration). Both keep the update
+  /// relations of eq. 49, so the converged step is the same.
+  enum class Predictor { extrapolated, velocity_only };
+  Predictor predictor = Predictor::extrapolated;
+
   /// Tries one step of size h from the current state; on failure restores it and returns false.
-  bool try_step(double h) {
+  bool try_step(double h, Predictor predictor) {
     const double t_next = t + h;
     const double beta_prime = (1 - alpha.alpha_m) / (h * h * alpha.beta * (1 - alpha.alpha_f));
     const double gamma_prime = alpha.gamma / (h * alpha.beta);
@@ -396,12 +404,15 @@ struct GeneralizedAlpha::Implementation {
                           lambda0 = lambda;
     if (h != factorized_step) have_factorization = false;
 
-    // Predictor (Brüls et al. 2012, Algorithm 1).
-    acceleration.setZero();
+    // Predictor (Brüls et al. 2012, Algorithm 1): a_{n+1} = base + (1 − α_f)/(1 − α_m) v̇_{n+1}.
     const Eigen::VectorXd a = (alpha.alpha_f * vdot0 - alpha.alpha_m * a0) / (1 - alpha.alpha_m);
-    velocity = v0 + h * (1 - alpha.gamma) * a0 + h * alpha.gamma * a;
-    increment = h * v0 + h * h * (0.5 - alpha.beta) * a0 + h * h * alpha.beta * a;
-    for (int dof : fixed_dofs) velocity(dof) = increment(dof) = 0.0;
+    acceleration.setZero();
+    if (predictor == Predictor::velocity_only)  // (½ − β) a_n + β a_{n+1} = 0
+      acceleration = (-(0.5 - alpha.beta) / alpha.beta * a0 - a) * (1 - alpha.alpha_m) / (1 - alpha.alpha_f);
+    const Eigen::VectorXd a_next = a + (1 - alpha.alpha_f) / (1 - alpha.alpha_m) * acceleration;
+    velocity = v0 + h * (1 - alpha.gamma) * a0 + h * alpha.gamma * a_next;
+    increment = h * v0 + h * h * (0.5 - alpha.beta) * a0 + h * h * alpha.beta * a_next;
+    for (int dof : fixed_dofs) velocity(dof) = increment(dof) = acceleration(dof) = 0.0;
     move_to_increment();
 
     double previous_norm = INFINITY, increment_norm_squared = INFINITY;
@@ -464,7 +475,10 @@ struct GeneralizedAlpha::Implementation {
   }
 
   void advance(double h, int depth) {
-    if (try_step(h)) {
+    // The predictor that converged last is tried first, the other one next.
+    const Predictor other = (predictor == Predictor::extrapolated) ? Predictor::velocity_only
+                                                                   : Predictor::extrapolated;
+    if (try_step(h, predictor) || try_step(h, predictor = other)) {
       ++counters.steps;
       return;
     }
