@@ -18,13 +18,20 @@ namespace {
 std::atomic<long> allocations{0};
 }
 
+// Every replaceable form that pairs with the frees below is replaced: Catch2 allocates with the
+// nothrow form, and a malloc/free pair split between ours and the sanitizer's is a mismatch.
 void* operator new(std::size_t size) {
   ++allocations;
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  ++allocations;
+  return std::malloc(size == 0 ? 1 : size);
+}
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 using namespace spar;
 

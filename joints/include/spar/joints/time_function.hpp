@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// A scalar function of time with its first two derivatives, the input of the driving
-/// constraints (docs/joints.md §5).
+/// constraints (docs/joints.md §3).
 
 #include <functional>
 #include <string_view>
