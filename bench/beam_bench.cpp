@@ -9,11 +9,7 @@ namespace {
 using namespace spar;
 
 iga::NurbsCurve<3> straight(int elements, int degree) {
-  const iga::KnotVector U = iga::KnotVector::open_uniform(elements, degree, degree - 1);
-  iga::NurbsCurve<3>::Points P = iga::NurbsCurve<3>::Points::Zero(3, U.basis_count());
-  const std::vector<double> greville = U.greville();
-  for (int i = 0; i < U.basis_count(); ++i) P(0, i) = greville[i];
-  return iga::NurbsCurve<3>(U, P);
+  return iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), elements, degree);
 }
 
 core::SectionStiffness steel_square() {

@@ -77,17 +77,13 @@ int main(int argc, char** argv) try {
   if (load_case != "rollup" && load_case != "tip-load")
     throw Error("unknown case '" + load_case + "'", "option --case", "use rollup or tip-load");
 
-  // 2. Build the beam: straight along +X, open-uniform knots, control points at the Greville
-  //    abscissae, steel square section.
-  const iga::KnotVector knots = iga::KnotVector::open_uniform(elements, degree, degree - 1);
-  iga::NurbsCurve<3>::Points points = iga::NurbsCurve<3>::Points::Zero(3, knots.basis_count());
-  const std::vector<double> greville = knots.greville();
-  for (int i = 0; i < knots.basis_count(); ++i) points(0, i) = length * greville[i];
+  // 2. Build the beam: straight along +X (open-uniform C^{p-1} NURBS), steel square section.
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   const core::SectionStiffness stiffness =
       core::SectionStiffness::from(steel, core::CrossSection::rectangle(width, width, 0.3));
   core::Model model;
-  const int b = model.add_beam({.centerline = iga::NurbsCurve<3>(knots, points), .stiffness = stiffness});
+  const int b = model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), elements, degree),
+                                    .stiffness = stiffness});
   const core::GeometricallyExactBeam& beam = model.beam(b);
   const int root = beam.node(0), tip = beam.node(beam.control_point_count() - 1);
 

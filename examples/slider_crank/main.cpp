@@ -22,32 +22,14 @@
 
 #include <cli.hpp>
 
+#include "slider_crank_model.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 using namespace spar;
-
-namespace {
-
-/// A straight NURBS centerline from a to b: open-uniform C^{p−1} knots, control points at the
-/// Greville abscissae.
-iga::NurbsCurve<3> straight_rod(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int elements, int degree) {
-  const iga::KnotVector knots = iga::KnotVector::open_uniform(elements, degree, degree - 1);
-  iga::NurbsCurve<3>::Points points(3, knots.basis_count());
-  const std::vector<double> greville = knots.greville();
-  for (int i = 0; i < knots.basis_count(); ++i) points.col(i) = a + greville[i] * (b - a);
-  return iga::NurbsCurve<3>(knots, points);
-}
-
-/// Rod II's deformation rate: |midpoint − chord midpoint| / length.
-double deformation_rate(const core::GeometricallyExactBeam& rod, const core::Configuration& q, double length) {
-  const Eigen::Vector3d chord_middle = 0.5 * (rod.position_at(q, 0.0) + rod.position_at(q, 1.0));
-  return (rod.position_at(q, 0.5) - chord_middle).norm() / length;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
@@ -65,49 +47,19 @@ int main(int argc, char** argv) try {
   const std::string out = cli.text("--out", "results/slider_crank", "output folder");
   if (!cli.finish()) return 0;
 
-  // 2. Build the rods (003 Table 1).
-  const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
-  const core::CrossSection square = core::CrossSection::rectangle(0.03, 0.03, 0.3);
-  const core::SectionStiffness stiffness = core::SectionStiffness::from(steel, square);
-  const core::SectionInertia inertia = core::SectionInertia::from(steel, square);
-  const double length_1 = 0.3, length_2 = 0.6;
-  const Eigen::Vector3d origin(0, 0, 0), elbow(length_1, 0, 0), end(length_1 + length_2, 0, 0);
-  core::Model model;
-  const int rod_1 = model.add_beam({.centerline = straight_rod(origin, elbow, elements, 3),
-                                    .stiffness = stiffness, .inertia = inertia});
-  const int rod_2 = model.add_beam({.centerline = straight_rod(elbow, end, elements, 3),
-                                    .stiffness = stiffness, .inertia = inertia});
-  const core::GeometricallyExactBeam& crank = model.beam(rod_1);
-  const core::GeometricallyExactBeam& coupler = model.beam(rod_2);
+  // 2. Build the mechanism of 003 Table 1 (examples/slider_crank/slider_crank_model.hpp): the
+  //    rods, the slider, the joints, the driving moment and gravity.
+  examples::SliderCrank mechanism = examples::build_slider_crank(elements);
+  core::Model& model = mechanism.model;
+  const core::GeometricallyExactBeam& crank = model.beam(mechanism.crank);
+  const core::GeometricallyExactBeam& coupler = model.beam(mechanism.coupler);
   const int crank_root = crank.node(0), crank_tip = crank.node(crank.control_point_count() - 1);
-  const int coupler_root = coupler.node(0), coupler_tip = coupler.node(coupler.control_point_count() - 1);
+  const int slider = mechanism.slider_node;
+  const double length_2 = examples::SliderCrank::coupler_length;
 
-  // 3. The slider: 0.1 kg (a 2 cm steel-like cube's inertia; its rotation is locked anyway).
-  const double slider_mass = 0.1;
-  const int slider = model.rigid_body(model.add_rigid_body(
-      {.center_of_mass = end, .mass = slider_mass,
-       .inertia = Eigen::Matrix3d::Identity() * slider_mass * 0.02 * 0.02 / 6})).node;
-
-  // 4. Loads: M = 500 N·m about Z on Rod I, gravity along −Y.
-  model.add_load(core::NodalMoment{.node = crank_root, .moment = Eigen::Vector3d(0, 0, 500),
-                                   .frame = core::MomentFrame::inertial});
-  model.set_gravity(Eigen::Vector3d(0, -9.81, 0));
-
-  // 5. Joints: spherical at ground–Rod I, Rod I–Rod II, Rod II–slider; slider on the X axis.
-  const core::Configuration& q0 = model.state();
-  solvers::ConstraintList joints;
-  joints.push_back(std::make_unique<joints::SphericalJoint>(joints::Attachment{crank_root, {}},
-                                                            joints::Attachment{-1, origin}, q0));
-  joints.push_back(std::make_unique<joints::SphericalJoint>(joints::Attachment{crank_tip, {}},
-                                                            joints::Attachment{coupler_root, {}}, q0));
-  joints.push_back(std::make_unique<joints::SphericalJoint>(joints::Attachment{coupler_tip, {}},
-                                                            joints::Attachment{slider, {}}, q0));
-  joints.push_back(std::make_unique<joints::PrismaticJoint>(joints::Attachment{slider, {}}, origin,
-                                                            Eigen::Vector3d::UnitX(), true, q0));
-
-  // 6. Integrate.
+  // 3. Integrate.
   solvers::GeneralizedAlpha integrator(
-      model, std::move(joints),
+      model, std::move(mechanism.joints),
       {.time_step = h, .spectral_radius = rho_infinity,
        .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
        .tolerance = tolerance, .constraint_tolerance = constraint_tolerance,
@@ -141,7 +93,7 @@ int main(int argc, char** argv) try {
   double max_speed = 0.0, max_rate = 0.0, max_residual = 0.0;
   auto record = [&]() {
     const core::Configuration& q = model.state();
-    const double rate = deformation_rate(coupler, q, length_2);
+    const double rate = examples::deformation_rate(coupler, q, length_2);
     // Rod I's angular speed about Z: the rotation rate of its chord, (r × ṙ)_z / |r|² with
     // r = x_tip − x_root. (The root section's own angular velocity carries the high-frequency
     // local vibration that the concentrated moment excites in a section of tiny rotary inertia.)
@@ -176,7 +128,7 @@ int main(int argc, char** argv) try {
   const solvers::DynamicCounters& counters = integrator.counters();
   results.close();
 
-  // 7. Report.
+  // 4. Report.
   std::printf("slider_crank, h = %g s, %s: %ld steps, %ld Newton iterations, %ld J_theta updates, "
               "%ld factorizations, %.3f s; max Rod I speed %.1f rad/s, max Rod II deformation rate "
               "%.2f %%, max constraint residual %.2e m\n",

@@ -69,13 +69,18 @@ std::vector<int> dofs_of(const std::vector<int>& nodes) {
 }
 
 /// Right-multiplies the rotational columns of a node-blocked matrix by T(ΔΘ_node) (Brüls et al.:
-/// K T(h Δq)).
+/// K T(h Δq)), row by row so that nothing is allocated.
 void apply_increment_tangent(const std::vector<int>& nodes, const Eigen::VectorXd& increment,
                              Eigen::Ref<Eigen::MatrixXd> K) {
   for (std::size_t I = 0; I < nodes.size(); ++I) {
     const Eigen::Vector3d theta = increment.segment<3>(dofs_per_node * nodes[I] + 3);
     if (theta.squaredNorm() == 0.0) continue;
-    K.middleCols<3>(dofs_per_node * I + 3) = K.middleCols<3>(dofs_per_node * I + 3) * lie::tangent(theta);
+    const Eigen::Matrix3d T = lie::tangent(theta);
+    const Eigen::Index column = dofs_per_node * static_cast<Eigen::Index>(I) + 3;
+    for (Eigen::Index row = 0; row < K.rows(); ++row) {
+      const Eigen::RowVector3d entries = K.block<1, 3>(row, column);
+      K.block<1, 3>(row, column) = entries * T;
+    }
   }
 }
 
@@ -88,6 +93,7 @@ struct GeneralizedAlpha::Implementation {
     core::InertiaContribution inertia;
     Eigen::VectorXd residual;  // its part of M v̇ + f_gyr + f_int − f_ext
     std::vector<int> nodes;
+    Eigen::VectorXd node_acceleration;  // scratch
   };
   /// The rotational blocks of a model block at t = 0 (frozen strategy): mass, gyroscopic and
   /// stiffness parts kept apart so they combine with the current h.
@@ -99,6 +105,7 @@ struct GeneralizedAlpha::Implementation {
     int first_multiplier = 0;
     Eigen::VectorXd value;
     Eigen::MatrixXd jacobian;
+    Eigen::VectorXd force;  // Bᵀλ (scratch)
   };
 
   core::Model& model;
@@ -206,20 +213,22 @@ struct GeneralizedAlpha::Implementation {
     const int n = dofs_per_node * static_cast<int>(w.nodes.size());
     w.residual = Eigen::VectorXd::Zero(n);
     if (w.internal.force.size() > 0) w.residual += w.internal.force;
-    Eigen::VectorXd node_acceleration(n);
+    w.node_acceleration.resize(n);
     for (std::size_t I = 0; I < w.nodes.size(); ++I)
-      node_acceleration.segment<dofs_per_node>(dofs_per_node * I) =
+      w.node_acceleration.segment<dofs_per_node>(dofs_per_node * I) =
           acceleration.segment<dofs_per_node>(dofs_per_node * w.nodes[I]);
-    if (w.inertia.mass.size() > 0) w.residual += w.inertia.mass * node_acceleration + w.inertia.gyroscopic;
+    if (w.inertia.mass.size() > 0) {
+      w.residual.noalias() += w.inertia.mass * w.node_acceleration;
+      w.residual += w.inertia.gyroscopic;
+    }
     if (!with_matrix) return;
 
     K->setZero(n, n);
     if (w.inertia.mass.size() > 0)
       *K += c.mass * w.inertia.mass + c.damping * w.inertia.gyroscopic_tangent;
     if (w.internal.tangent.size() > 0 && c.stiffness != 0.0) {
-      Eigen::MatrixXd stiffness = w.internal.tangent;
-      apply_increment_tangent(w.nodes, increment, stiffness);
-      *K += c.stiffness * stiffness;
+      apply_increment_tangent(w.nodes, increment, w.internal.tangent);
+      *K += c.stiffness * w.internal.tangent;
     }
     if (frozen_now) {
       // 003 §5.1: the rotation–rotation blocks J_θ stay those of t = 0.
@@ -251,15 +260,13 @@ struct GeneralizedAlpha::Implementation {
     if (!K) return;
     K->setZero(n + m, n + m);
     if (c.stiffness != 0.0) {
-      Eigen::MatrixXd tangent(n, n);
-      constraint.multiplier_tangent(q, time, lambda.segment(w.first_multiplier, m), tangent);
-      apply_increment_tangent(w.nodes, increment, tangent);
-      K->topLeftCorner(n, n) = c.stiffness * tangent;
+      constraint.multiplier_tangent(q, time, lambda.segment(w.first_multiplier, m), K->topLeftCorner(n, n));
+      K->topLeftCorner(n, n) *= c.stiffness;
     }
-    Eigen::MatrixXd BT = w.jacobian;
-    apply_increment_tangent(w.nodes, increment, BT);
-    K->bottomLeftCorner(m, n) = BT;
     K->topRightCorner(n, m) = w.jacobian.transpose();
+    K->bottomLeftCorner(m, n) = w.jacobian;
+    // Brüls et al.: the columns of the unknowns carry T(h Δq): (c_K K_λ) T and B T.
+    apply_increment_tangent(w.nodes, increment, K->leftCols(n));
   }
 
   /// Evaluates the scaled residual [r/β′ ; Φ] at the current state (and assembles the iteration
@@ -299,12 +306,11 @@ struct GeneralizedAlpha::Implementation {
         scale.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += part.cwiseAbs();
       }
     for (std::size_t ci = 0; ci < constraints.size(); ++ci) {
-      const ConstraintWork& w = constraint_work[ci];
-      const Eigen::VectorXd force =
-          w.jacobian.transpose() * lambda.segment(w.first_multiplier, w.value.size());
+      ConstraintWork& w = constraint_work[ci];
+      w.force.noalias() = w.jacobian.transpose() * lambda.segment(w.first_multiplier, w.value.size());
       for (std::size_t I = 0; I < w.nodes.size(); ++I) {
-        dynamic.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += force.segment<dofs_per_node>(dofs_per_node * I);
-        scale.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += force.segment<dofs_per_node>(dofs_per_node * I).cwiseAbs();
+        dynamic.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += w.force.segment<dofs_per_node>(dofs_per_node * I);
+        scale.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += w.force.segment<dofs_per_node>(dofs_per_node * I).cwiseAbs();
       }
       residual.segment(dof_count + w.first_multiplier, w.value.size()) = w.value;
     }
@@ -417,9 +423,12 @@ struct GeneralizedAlpha::Implementation {
 
     double previous_norm = INFINITY, increment_norm_squared = INFINITY;
     for (int iteration = 0;; ++iteration) {
-      const bool need_matrix = options.iteration_matrix != IterationMatrix::modified ||
-                               !have_factorization || refactor_requested;
-      evaluate(t_next, need_matrix ? &coefficients : nullptr, beta_prime);
+      // Once the increment is below the tolerance the next evaluation is most likely the last:
+      // it computes the residual only, and the matrix follows if the residual check fails.
+      const bool expect_convergence = increment_norm_squared <= options.tolerance;
+      bool need_matrix = options.iteration_matrix != IterationMatrix::modified ||
+                         !have_factorization || refactor_requested;
+      evaluate(t_next, need_matrix && !expect_convergence ? &coefficients : nullptr, beta_prime);
       if (!residual.allFinite()) break;
       if (iteration > 0 && increment_norm_squared <= options.tolerance &&
           constraint_norm() <= options.constraint_tolerance && dynamic_residual_small(beta_prime)) {
@@ -429,6 +438,7 @@ struct GeneralizedAlpha::Implementation {
         return true;
       }
       if (iteration == options.max_iterations) break;
+      if (need_matrix && expect_convergence) evaluate(t_next, &coefficients, beta_prime);
       if (need_matrix) {
         if (options.iteration_matrix != IterationMatrix::frozen) ++counters.jtheta_evaluations;
         factorize(t_next);

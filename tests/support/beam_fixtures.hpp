@@ -4,20 +4,16 @@
 #include <spar/core/configuration.hpp>
 #include <spar/iga/knot_vector.hpp>
 #include <spar/iga/nurbs_curve.hpp>
+#include <spar/iga/straight_line.hpp>
 
 #include <cmath>
 #include <numbers>
 
 namespace spar::test {
 
-/// A straight centerline from the origin along +X: open-uniform C^{p−1} knots, control points at
-/// the Greville abscissae (so dS/du = length everywhere).
+/// A straight centerline from the origin along +X (dS/du = length everywhere).
 inline iga::NurbsCurve<3> straight_centerline(double length, int elements, int degree) {
-  iga::KnotVector U = iga::KnotVector::open_uniform(elements, degree, degree - 1);
-  const std::vector<double> greville = U.greville();
-  iga::NurbsCurve<3>::Points P = iga::NurbsCurve<3>::Points::Zero(3, greville.size());
-  for (std::size_t i = 0; i < greville.size(); ++i) P(0, i) = length * greville[i];
-  return iga::NurbsCurve<3>(U, P);
+  return iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), elements, degree);
 }
 
 /// Section stiffness with distinct, order-one values (and a bending coupling), so that a wrong

@@ -11,3 +11,4 @@
 #include <spar/iga/nurbs_curve.hpp>
 #include <spar/iga/quadrature.hpp>
 #include <spar/iga/rational_bezier.hpp>
+#include <spar/iga/straight_line.hpp>

@@ -1,0 +1,71 @@
+#pragma once
+// The flexible slider-crank of 003 §5.1, Table 1: shared by the example and its validation test.
+#include <spar/spar.hpp>
+#include <spar/joints/joints.hpp>
+
+#include <memory>
+
+namespace spar::examples {
+
+/// The mechanism: its model (two rods and the slider), its joints, and where things are.
+struct SliderCrank {
+  static constexpr double crank_length = 0.3;    // Rod I [m]
+  static constexpr double coupler_length = 0.6;  // Rod II [m]
+  static constexpr double slider_mass = 0.1;     // [kg]
+  static constexpr double driving_moment = 500;  // M about Z on Rod I [N m]
+
+  core::Model model;
+  solvers::ConstraintList joints;
+  int crank = 0, coupler = 0;  // beam indices
+  int slider_node = 0;
+};
+
+/// 003 §5.1: Rod I from the origin to (0.3, 0, 0) and Rod II on to (0.9, 0, 0), steel
+/// 0.03 × 0.03 m (E = 2.1e11 Pa, ν = 0.3, ρ = 7850 kg/m³), `elements` cubic C² elements each;
+/// spherical joints ground–Rod I, Rod I–Rod II, Rod II–slider; the slider (0.1 kg; the inertia of
+/// a 2 cm cube, irrelevant since its rotation is locked) on the X axis; M = 500 N·m about Z on
+/// Rod I's root section; gravity 9.81 m/s² along −Y (our reading: in the plane of motion).
+inline SliderCrank build_slider_crank(int elements) {
+  SliderCrank s;
+  const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
+  const core::CrossSection square = core::CrossSection::rectangle(0.03, 0.03, 0.3);
+  const core::SectionStiffness stiffness = core::SectionStiffness::from(steel, square);
+  const core::SectionInertia inertia = core::SectionInertia::from(steel, square);
+  const Eigen::Vector3d origin(0, 0, 0), elbow(SliderCrank::crank_length, 0, 0),
+      end(SliderCrank::crank_length + SliderCrank::coupler_length, 0, 0);
+  s.crank = s.model.add_beam({.centerline = iga::straight_line<3>(origin, elbow, elements, 3),
+                              .stiffness = stiffness, .inertia = inertia});
+  s.coupler = s.model.add_beam({.centerline = iga::straight_line<3>(elbow, end, elements, 3),
+                                .stiffness = stiffness, .inertia = inertia});
+  const core::GeometricallyExactBeam& crank = s.model.beam(s.crank);
+  const core::GeometricallyExactBeam& coupler = s.model.beam(s.coupler);
+  const int crank_root = crank.node(0), crank_tip = crank.node(crank.control_point_count() - 1);
+  const int coupler_root = coupler.node(0), coupler_tip = coupler.node(coupler.control_point_count() - 1);
+  s.slider_node = s.model.rigid_body(s.model.add_rigid_body(
+      {.center_of_mass = end, .mass = SliderCrank::slider_mass,
+       .inertia = Eigen::Matrix3d::Identity() * SliderCrank::slider_mass * 0.02 * 0.02 / 6})).node;
+
+  s.model.add_load(core::NodalMoment{.node = crank_root,
+                                     .moment = Eigen::Vector3d(0, 0, SliderCrank::driving_moment),
+                                     .frame = core::MomentFrame::inertial});
+  s.model.set_gravity(Eigen::Vector3d(0, -9.81, 0));
+
+  const core::Configuration& q0 = s.model.state();
+  using joints::Attachment;
+  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{crank_root, {}}, Attachment{-1, origin}, q0));
+  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{crank_tip, {}}, Attachment{coupler_root, {}}, q0));
+  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{coupler_tip, {}}, Attachment{s.slider_node, {}}, q0));
+  s.joints.push_back(std::make_unique<joints::PrismaticJoint>(Attachment{s.slider_node, {}}, origin,
+                                                              Eigen::Vector3d::UnitX(), true, q0));
+  return s;
+}
+
+/// A rod's deformation rate (003 §5.1): the distance of its midpoint from the midpoint of its
+/// chord, over its length.
+inline double deformation_rate(const core::GeometricallyExactBeam& rod, const core::Configuration& q,
+                               double length) {
+  const Eigen::Vector3d chord_middle = 0.5 * (rod.position_at(q, 0.0) + rod.position_at(q, 1.0));
+  return (rod.position_at(q, 0.5) - chord_middle).norm() / length;
+}
+
+}  // namespace spar::examples
