@@ -5,12 +5,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
-#include <memory>
 #include <new>
-#include <vector>
 
 #include "constraint_checks.hpp"
 
@@ -42,15 +41,15 @@ TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
   const Eigen::Vector3d axis = random.axis();
   const joints::Attachment a = joints::attach_at(0, point, q0);
   const joints::Attachment b = joints::attach_at(2, point, q0);
-  std::vector<std::unique_ptr<joints::Constraint>> constraints;
-  constraints.push_back(std::make_unique<joints::SphericalJoint>(a, b, q0));
-  constraints.push_back(std::make_unique<joints::RevoluteJoint>(a, b, axis, q0));
-  constraints.push_back(std::make_unique<joints::ClampJoint>(a, b, q0));
-  constraints.push_back(std::make_unique<joints::PrismaticJoint>(a, point, axis, true, q0));
-  constraints.push_back(std::make_unique<joints::PositionDriver>(
-      a, axis, joints::TimeFunction::polynomial({0.0, 1.0, 2.0}), q0));
-  constraints.push_back(
-      std::make_unique<joints::AngleDriver>(1, axis, joints::TimeFunction::linear(2.0), q0));
+  const joints::SphericalJoint spherical(a, b, q0);
+  const joints::RevoluteJoint revolute(a, b, axis, q0);
+  const joints::ClampJoint clamp(a, b, q0);
+  const joints::PrismaticJoint prismatic(a, point, axis, true, q0);
+  const joints::PositionDriver position(a, axis, joints::TimeFunction::polynomial({0.0, 1.0, 2.0}),
+                                        q0);
+  const joints::AngleDriver angle(1, axis, joints::TimeFunction::linear(2.0), q0);
+  const std::array<const joints::Constraint*, 6> constraints = {&spherical, &revolute, &clamp,
+                                                                &prismatic, &position, &angle};
 
   const core::Configuration q = test::random_configuration(3, random);
   const Eigen::VectorXd velocity = Eigen::VectorXd::Constant(q.dof_count(), 0.5);
@@ -61,7 +60,7 @@ TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
   double sink = 0;
 
   const long before = allocations.load();
-  for (const auto& constraint : constraints) {
+  for (const joints::Constraint* constraint : constraints) {
     const Eigen::Index m = constraint->equation_count();
     const Eigen::Index n = 6 * static_cast<Eigen::Index>(constraint->nodes().size());
     constraint->value(q, 0.3, phi.head(m));
