@@ -1,28 +1,28 @@
 #!/usr/bin/env bash
-# The main job: sets up, builds, and runs the flagship example, then plots it.
-# Flagship for now: the cantilever roll-up (examples/cantilever_statics); extra arguments are
-# passed to it, e.g. scripts/run.sh --case tip-load --load 10.
+# The main job: sets up, builds and runs the flagship example — the flexible slider-crank of
+# paper 003 (h = 5e-4 s, frozen iteration matrix) — writes its HDF5/XDMF/CSV and a plot, and
+# prints a one-paragraph summary. Extra arguments go to the example, e.g. scripts/run.sh --h 1e-4.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/setup.sh
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release
-cmake --build build/release -j"$(nproc)" --target cantilever_statics
+cmake --build build/release -j"$(nproc)" --target slider_crank
 
-out=results/cantilever_statics
+out=results/slider_crank
 mkdir -p "$out"
-build/release/examples/cantilever_statics --out "$out" "$@" | tee "$out.log"
-/usr/bin/python3 examples/cantilever_statics/plot.py "$out"
+build/release/examples/slider_crank --h 5e-4 --strategy frozen --out "$out" "$@" | tee "$out/run.log"
+/usr/bin/python3 examples/slider_crank/plot.py "$out"
 
-summary=$(tail -n 1 "$out.log")
-/usr/bin/python3 - "$summary" <<'PY'
+/usr/bin/python3 - "$(tail -n 1 "$out/run.log")" <<'PY'
 import json, sys
 r = json.loads(sys.argv[1])
-print(f"\nSummary: a {r['length']:g} m steel cantilever ({r['elements']} NURBS elements of degree "
-      f"{r['degree']}) under the '{r['case']}' load {r['load']:.6g} converged in "
-      f"{r['newton_iterations']} Newton iterations over {r['load_steps']} load steps in "
-      f"{r['wall_s']:.3f} s. Its tip, relative to the root, is at ({r['tip_x']:.6f}, "
-      f"{r['tip_y']:.6f}, {r['tip_z']:.6f}) m against the analytical "
-      f"({r['reference_tip_x']:.6f}, {r['reference_tip_y']:.6f}) m: a distance of "
-      f"{r['relative_tip_error']:.2e} L. Results and the plot are in results/cantilever_statics/.")
+print(f"\nSummary: the flexible slider-crank of Wu et al. (2020, section 5.1) ran {r['steps']} steps of "
+      f"h = {r['h']:g} s with the '{r['strategy']}' iteration matrix in {r['wall_s']:.2f} s "
+      f"({r['newton_iterations']} Newton iterations, {r['factorizations']} factorizations, "
+      f"{r['jtheta_updates']} updates of J_theta, {r['cutbacks']} cut-back steps). Rod I reached "
+      f"{r['max_rod1_speed']:.0f} rad/s (paper: over 320) and Rod II's deformation rate peaked at "
+      f"{100 * r['max_rod2_deformation_rate']:.2f} % (paper: over 5 % at h = 1e-4); the joints held "
+      f"to {r['max_constraint_residual']:.1e} m. Time histories: results/slider_crank/slider_crank.h5 "
+      f"(open slider_crank.xmf in ParaView), slider_crank.csv; figure: slider_crank.png.")
 PY

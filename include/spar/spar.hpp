@@ -5,5 +5,6 @@
 #include <spar/core/core.hpp>
 #include <spar/error.hpp>
 #include <spar/iga/iga.hpp>
+#include <spar/joints/joints.hpp>
 #include <spar/lie/lie.hpp>
 #include <spar/solvers/solvers.hpp>
