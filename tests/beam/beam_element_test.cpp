@@ -70,6 +70,19 @@ Eigen::VectorXd chart_gradient(const core::GeometricallyExactBeam& beam, int e,
   return g;
 }
 
+/// Central differences of f(Δ) at Δ = 0 along each of the n unit vectors: column i is
+/// (f(h eᵢ) − f(−h eᵢ)) / 2h.
+template <class F>
+Eigen::MatrixXd central_differences(int n, F&& f) {
+  Eigen::MatrixXd columns(f(Eigen::VectorXd::Zero(n)).size(), n);
+  for (int i = 0; i < n; ++i) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+    d(i) = fd_step;
+    columns.col(i) = (f(d) - f(Eigen::VectorXd(-d))) / (2 * fd_step);
+  }
+  return columns;
+}
+
 double relative(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).norm() / std::max(b.norm(), 1e-300);
 }
@@ -93,16 +106,12 @@ TEST_CASE("beam internal force is the gradient of the strain energy", "[gebt]") 
       for (int e = 0; e < beam.element_count(); ++e) {
         core::BeamElementResult r;
         core::evaluate_beam_element(beam, e, q, core::BeamEvaluation::force, r);
-        const int n = static_cast<int>(r.internal_force.size());
-        Eigen::VectorXd fd(n);
-        for (int i = 0; i < n; ++i) {
-          Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-          d(i) = fd_step;
-          fd(i) = (energy(beam, e, perturbed(beam, e, q, d)) -
-                   energy(beam, e, perturbed(beam, e, q, -d))) / (2 * fd_step);
-        }
+        const Eigen::MatrixXd fd = central_differences(
+            static_cast<int>(r.internal_force.size()), [&](const Eigen::VectorXd& d) {
+              return Eigen::VectorXd::Constant(1, energy(beam, e, perturbed(beam, e, q, d)));
+            });
         INFO("p = " << c.degree << ", seed " << seed << ", element " << e);
-        CHECK(relative(r.internal_force, fd) <= fd_tolerance);
+        CHECK(relative(r.internal_force, fd.transpose()) <= fd_tolerance);
       }
     }
   }
@@ -120,13 +129,9 @@ TEST_CASE("beam stiffness is the exact symmetric Hessian in the exponential char
       for (int e = 0; e < beam.element_count(); ++e) {
         core::BeamElementResult r;
         core::evaluate_beam_element(beam, e, q, core::BeamEvaluation::force_and_stiffness, r);
-        const int n = static_cast<int>(r.internal_force.size());
-        Eigen::MatrixXd fd(n, n);
-        for (int i = 0; i < n; ++i) {
-          Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-          d(i) = fd_step;
-          fd.col(i) = (chart_gradient(beam, e, q, d) - chart_gradient(beam, e, q, -d)) / (2 * fd_step);
-        }
+        const Eigen::MatrixXd fd = central_differences(
+            static_cast<int>(r.internal_force.size()),
+            [&](const Eigen::VectorXd& d) { return chart_gradient(beam, e, q, d); });
         const Eigen::MatrixXd K = r.stiffness;
         INFO("p = " << c.degree << ", seed " << seed << ", element " << e);
         CHECK(relative(K, K.transpose()) <= 1e-13);
@@ -148,16 +153,13 @@ TEST_CASE("the local tangent is the derivative of the internal force along q + D
   core::evaluate_beam_element(beam, 1, q, core::BeamEvaluation::force_and_stiffness, r);
   Eigen::MatrixXd K = r.stiffness;
   core::add_local_tangent_correction(r.internal_force, K);
-  const int n = static_cast<int>(r.internal_force.size());
-  Eigen::MatrixXd fd(n, n);
-  for (int i = 0; i < n; ++i) {
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-    d(i) = fd_step;
-    core::BeamElementResult plus, minus;
-    core::evaluate_beam_element(beam, 1, perturbed(beam, 1, q, d), core::BeamEvaluation::force, plus);
-    core::evaluate_beam_element(beam, 1, perturbed(beam, 1, q, -d), core::BeamEvaluation::force, minus);
-    fd.col(i) = (plus.internal_force - minus.internal_force) / (2 * fd_step);
-  }
+  const Eigen::MatrixXd fd = central_differences(
+      static_cast<int>(r.internal_force.size()), [&](const Eigen::VectorXd& d) {
+        core::BeamElementResult perturbed_result;
+        core::evaluate_beam_element(beam, 1, perturbed(beam, 1, q, d), core::BeamEvaluation::force,
+                                    perturbed_result);
+        return Eigen::VectorXd(perturbed_result.internal_force);
+      });
   CHECK(relative(K, fd) <= fd_tolerance);
 }
 
@@ -261,12 +263,8 @@ TEST_CASE("the curved beam's stiffness is the exact Hessian", "[gebt]") {
   const core::Configuration q = deform(reference, 13);
   core::BeamElementResult r;
   core::evaluate_beam_element(beam, 1, q, core::BeamEvaluation::force_and_stiffness, r);
-  const int n = static_cast<int>(r.internal_force.size());
-  Eigen::MatrixXd fd(n, n);
-  for (int i = 0; i < n; ++i) {
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-    d(i) = fd_step;
-    fd.col(i) = (chart_gradient(beam, 1, q, d) - chart_gradient(beam, 1, q, -d)) / (2 * fd_step);
-  }
+  const Eigen::MatrixXd fd = central_differences(
+      static_cast<int>(r.internal_force.size()),
+      [&](const Eigen::VectorXd& d) { return chart_gradient(beam, 1, q, d); });
   CHECK(relative(Eigen::MatrixXd(r.stiffness), fd) <= fd_tolerance);
 }

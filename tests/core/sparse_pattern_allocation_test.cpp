@@ -5,27 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<long> allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-// Catch2 allocates with the nothrow form; replacing it too keeps every new paired with this
-// file's delete (AddressSanitizer reports a mismatch otherwise).
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  ++allocations;
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "allocation_counter.hpp"
 
 TEST_CASE("add_block and set_zero do not allocate", "[core][sparse_pattern][allocation]") {
   using spar::core::PatternBlock;
@@ -34,14 +14,14 @@ TEST_CASE("add_block and set_zero do not allocate", "[core][sparse_pattern][allo
   const Eigen::MatrixXd K = Eigen::MatrixXd::Ones(4, 4);
   const Eigen::MatrixXd B = Eigen::MatrixXd::Ones(1, 2);
   const Eigen::MatrixXd B_transpose_position = Eigen::MatrixXd::Ones(2, 1);
-  const long before = allocations.load();
+  const long before = spar::test::allocation_count();
   for (int i = 0; i < 100; ++i) {
     pattern.set_zero();
     pattern.add_block(0, K);
     pattern.add_block(1, B);
     pattern.add_block(1, B, B_transpose_position);
   }
-  const long after = allocations.load();
+  const long after = spar::test::allocation_count();
   CHECK(after == before);
   CHECK(pattern.matrix().coeff(1, 1) == 1.0);
   CHECK(pattern.matrix().coeff(5, 1) == 2.0);

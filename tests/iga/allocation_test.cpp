@@ -5,28 +5,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<long> allocations{0};
-}
-
-// Every replaceable form that pairs with the frees below is replaced: Catch2 allocates with the
-// nothrow form, and a malloc/free pair split between ours and the sanitizer's is a mismatch.
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  ++allocations;
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+#include "allocation_counter.hpp"
 
 TEST_CASE("basis kernels and curve evaluation do not allocate", "[iga][allocation]") {
   using namespace spar::iga;
@@ -35,7 +14,7 @@ TEST_CASE("basis kernels and curve evaluation do not allocate", "[iga][allocatio
                             Eigen::VectorXd::Constant(U.basis_count(), 1.5));
   BasisTable N;
   double sink = 0.0;
-  const long before = allocations.load();
+  const long before = spar::test::allocation_count();
   for (int i = 0; i <= 100; ++i) {
     const double u = i / 100.0;
     const int span = U.find_span(u);
@@ -45,7 +24,7 @@ TEST_CASE("basis kernels and curve evaluation do not allocate", "[iga][allocatio
     sink += N.sum();
     sink += curve.derivatives(u, 3).sum() + curve.point(u).sum();
   }
-  const long after = allocations.load();
+  const long after = spar::test::allocation_count();
   CHECK(after == before);
   CHECK(std::isfinite(sink));
 }

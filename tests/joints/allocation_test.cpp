@@ -5,32 +5,12 @@
 
 #include <catch2/catch.hpp>
 
+#include "allocation_counter.hpp"
+
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <new>
 
 #include "constraint_checks.hpp"
-
-namespace {
-std::atomic<long> allocations{0};
-}
-
-// Every replaceable form that pairs with the frees below is replaced: Catch2 allocates with the
-// nothrow form, and a malloc/free pair split between ours and the sanitizer's is a mismatch.
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  ++allocations;
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 using namespace spar;
 
@@ -59,7 +39,7 @@ TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
   Eigen::MatrixXd K(12, 12);
   double sink = 0;
 
-  const long before = allocations.load();
+  const long before = spar::test::allocation_count();
   for (const joints::Constraint* constraint : constraints) {
     const Eigen::Index m = constraint->equation_count();
     const Eigen::Index n = 6 * static_cast<Eigen::Index>(constraint->nodes().size());
@@ -72,7 +52,7 @@ TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
     constraint->time_derivative(q, 0.3, phi.head(m));
     sink += phi.head(m).sum();
   }
-  const long after = allocations.load();
+  const long after = spar::test::allocation_count();
   CHECK(after == before);
   CHECK(std::isfinite(sink));
 }

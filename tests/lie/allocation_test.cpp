@@ -4,32 +4,13 @@
 
 #include <catch2/catch.hpp>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<long> allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  ++allocations;
-  return std::malloc(size == 0 ? 1 : size);
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+#include "allocation_counter.hpp"
 
 TEST_CASE("exp, log, tangent, tangent_inverse and their derivatives do not allocate",
           "[lie][allocation]") {
   const Eigen::Vector3d theta(0.3, -0.8, 1.4), a(1.0, 2.0, 3.0), b(-1.0, 0.5, 0.25);
   Eigen::Matrix3d sink = Eigen::Matrix3d::Zero();
-  const long before = allocations.load();
+  const long before = spar::test::allocation_count();
   for (int i = 0; i < 100; ++i) {
     const Eigen::Matrix3d R = spar::lie::exp(theta);
     sink += R + spar::lie::hat(spar::lie::log(R));
@@ -39,7 +20,7 @@ TEST_CASE("exp, log, tangent, tangent_inverse and their derivatives do not alloc
     sink += spar::lie::tangent_inverse_derivative(theta, a);
     sink += spar::lie::exp_and_tangent(theta).tangent;
   }
-  const long after = allocations.load();
+  const long after = spar::test::allocation_count();
   CHECK(after == before);
   CHECK(sink.allFinite());
 }
