@@ -1,4 +1,5 @@
 #include <spar/core/model.hpp>
+#include <spar/core/distributed_moment.hpp>
 #include <spar/error.hpp>
 #include <spar/lie/hat.hpp>
 #include <spar/lie/log.hpp>
@@ -97,6 +98,7 @@ void Model::add_load(const Load& load, LoadHistory history) {
   if (const auto* f = std::get_if<NodalForce>(&load)) check_node(f->node, "core::Model::add_load");
   if (const auto* m = std::get_if<NodalMoment>(&load)) check_node(m->node, "core::Model::add_load");
   if (const auto* d = std::get_if<DistributedForce>(&load)) beam(d->beam);
+  if (const auto* d = std::get_if<DistributedMoment>(&load)) beam(d->beam);
   loads_.push_back(load);
   load_histories_.push_back(std::move(history));
 }
@@ -117,7 +119,11 @@ std::vector<ModelBlock> Model::blocks() const {
       blocks.push_back({ModelBlock::Kind::beam_element, b, e});
   for (int r = 0; r < rigid_body_count(); ++r) blocks.push_back({ModelBlock::Kind::rigid_body, r, 0});
   for (int l = 0; l < static_cast<int>(loads_.size()); ++l)
-    if (load_has_tangent(loads_[l])) blocks.push_back({ModelBlock::Kind::load, l, 0});
+    if (const auto* m = std::get_if<DistributedMoment>(&loads_[l]))
+      for (int e = 0; e < beams_[m->beam].element_count(); ++e)
+        blocks.push_back({ModelBlock::Kind::load, l, e});
+    else if (load_has_tangent(loads_[l]))
+      blocks.push_back({ModelBlock::Kind::load, l, 0});
   return blocks;
 }
 
@@ -135,7 +141,13 @@ std::vector<PatternBlock> Model::pattern_blocks() const {
         pattern.push_back(PatternBlock::element(node_dofs(rigid_bodies_[block.index].node, 1)));
         break;
       case ModelBlock::Kind::load:
-        pattern.push_back(PatternBlock::element(node_dofs(std::get<NodalMoment>(loads_[block.index]).node, 1)));
+        if (const auto* m = std::get_if<DistributedMoment>(&loads_[block.index])) {
+          const GeometricallyExactBeam& beam = beams_[m->beam];
+          pattern.push_back(PatternBlock::element(
+              node_dofs(beam.node(beam.element(block.element).first_control_point), beam.degree() + 1)));
+        } else {
+          pattern.push_back(PatternBlock::element(node_dofs(std::get<NodalMoment>(loads_[block.index]).node, 1)));
+        }
         break;
     }
   }
@@ -159,11 +171,19 @@ void beam_element_contribution(const Model& model, int b, int e, const Configura
   add_local_tangent_correction(out.force, out.tangent);
 }
 
-bool load_has_tangent(const Load& load) { return std::holds_alternative<NodalMoment>(load); }
+bool load_has_tangent(const Load& load) {
+  return std::holds_alternative<NodalMoment>(load) || std::holds_alternative<DistributedMoment>(load);
+}
 
 void load_contribution(const Model& model, const Load& load, const Configuration& q,
-                       double load_factor, bool with_tangent, NodalContribution& out) {
+                       double load_factor, bool with_tangent, NodalContribution& out, int element) {
   out.tangent.resize(0, 0);
+  out.energy = 0.0;
+  if (const auto* m = std::get_if<DistributedMoment>(&load)) {
+    distributed_moment_contribution(model.beam(m->beam), element, q,
+                                    load_factor * m->moment_per_length, m->frame, with_tangent, out);
+    return;
+  }
   if (const auto* f = std::get_if<NodalForce>(&load)) {
     out.nodes = {f->node};
     out.force = Eigen::VectorXd::Zero(dofs_per_node);

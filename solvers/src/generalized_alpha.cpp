@@ -204,7 +204,8 @@ struct GeneralizedAlpha::Implementation {
         break;
       case core::ModelBlock::Kind::load:
         core::load_contribution(model, model.loads()[block.index], q,
-                                model.load_factor(block.index, time), with_matrix, w.internal);
+                                model.load_factor(block.index, time), with_matrix, w.internal,
+                                block.element);
         w.internal.force = -w.internal.force;  // an external force enters the residual negatively
         if (w.internal.tangent.size() > 0) w.internal.tangent = -w.internal.tangent;
         w.nodes = w.internal.nodes;

@@ -100,7 +100,8 @@ private:
               c.tangent = Eigen::MatrixXd::Zero(dofs_per_node, dofs_per_node);
               break;
             case core::ModelBlock::Kind::load:  // an external force: it enters with a minus sign
-              core::load_contribution(model_, model_.loads()[block.index], q, load_factor, true, c);
+              core::load_contribution(model_, model_.loads()[block.index], q, load_factor, true, c,
+                                      block.element);
               c.force = -c.force;
               c.tangent = -c.tangent;
               break;

@@ -8,6 +8,7 @@
 #include <spar/core/configuration.hpp>
 #include <spar/core/converged_chart.hpp>
 #include <spar/core/cross_section.hpp>
+#include <spar/core/distributed_moment.hpp>
 #include <spar/core/hdf5_file.hpp>
 #include <spar/core/inertia.hpp>
 #include <spar/core/loads.hpp>

@@ -36,6 +36,14 @@ struct DistributedForce {
   Eigen::Vector3d force_per_length = Eigen::Vector3d::Zero();
 };
 
-using Load = std::variant<NodalForce, NodalMoment, DistributedForce>;
+/// A moment per unit reference length on a whole beam: material frame (follower, 003 eq. 33's
+/// P) or inertial frame (dead). Its generalized force and tangent: core/distributed_moment.hpp.
+struct DistributedMoment {
+  int beam = 0;
+  Eigen::Vector3d moment_per_length = Eigen::Vector3d::Zero();
+  MomentFrame frame = MomentFrame::material;
+};
+
+using Load = std::variant<NodalForce, NodalMoment, DistributedForce, DistributedMoment>;
 
 }  // namespace spar::core

@@ -34,7 +34,7 @@ struct ModelBlock {
   enum class Kind { beam_element, rigid_body, load };
   Kind kind = Kind::beam_element;
   int index = 0;    ///< beam, rigid body or load index
-  int element = 0;  ///< element of the beam (beam_element only)
+  int element = 0;  ///< element of the beam (beam_element, and load for distributed moments)
 };
 
 /// A factor multiplying a load in time (dynamics); an empty function means 1.
@@ -120,11 +120,14 @@ void beam_element_contribution(const Model& model, int b, int e, const Configura
 
 /// The external force of a load at load factor λ and, if `with_tangent`, its derivative along
 /// q ⊕ Δ: zero for forces and material moments, ∂(Rᵀ M)/∂Δ = hat(Rᵀ M) for inertial moments.
+/// A distributed moment contributes element by element: `element` selects which.
 void load_contribution(const Model& model, const Load& load, const Configuration& q,
-                       double load_factor, bool with_tangent, NodalContribution& out);
+                       double load_factor, bool with_tangent, NodalContribution& out,
+                       int element = 0);
 
-/// True for loads that need a block of the iteration matrix (pattern_blocks()): moments, whose
+/// True for loads that need blocks of the iteration matrix (pattern_blocks()): moments, whose
 /// generalized force depends on the rotation chart even when their local tangent is zero.
+/// Distributed moments have one block per element of their beam.
 bool load_has_tangent(const Load& load);
 
 }  // namespace spar::core
