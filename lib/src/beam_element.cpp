@@ -138,7 +138,9 @@ RelativeRotations relative_rotations(const GeometricallyExactBeam& beam, int e,
   rel.reference = q.rotation[first];
   rel.psi[0].setZero();
   for (int I = 1; I < rel.node_count; ++I) {
-    rel.psi[I] = lie::relative_rotation(rel.reference, q.rotation[first + I]);
+    // R_rᵀR_I is a product of the model's rotations: log's input check (for user input) is skipped.
+    rel.psi[I] = lie::rotation_vector_from_quaternion(
+        lie::quaternion_from_rotation(Eigen::Matrix3d(rel.reference.transpose() * q.rotation[first + I])));
     // 1e-6 short of π: beyond it log(R_rᵀR_I) jumps to the opposite vector and the
     // interpolated rotation field tears.
     if (rel.psi[I].norm() > 3.14159165)

@@ -188,18 +188,19 @@ struct GeneralizedAlpha::Implementation {
     const bool with_matrix = (K != nullptr);
     const bool frozen_now = with_matrix && options.iteration_matrix == IterationMatrix::frozen &&
                             frozen.size() == model_blocks.size();
-    w.internal.force.resize(0);
-    w.internal.tangent.resize(0, 0);
-    w.internal.energy = 0.0;
-    w.inertia.mass.resize(0, 0);
+    // Which parts this block has (its buffers keep their capacity from one call to the next).
+    bool has_internal = false, has_tangent = false, has_inertia = false;
     switch (block.kind) {
       case core::ModelBlock::Kind::beam_element:
-        core::beam_element_contribution(model, block.index, block.element, q, with_matrix && c.stiffness != 0.0, w.internal);
+        has_tangent = with_matrix && c.stiffness != 0.0;
+        core::beam_element_contribution(model, block.index, block.element, q, has_tangent, w.internal);
         core::beam_element_inertia(model.beam(block.index), block.element, velocity, w.inertia);
+        has_internal = has_inertia = true;
         w.nodes = w.internal.nodes;
         break;
       case core::ModelBlock::Kind::rigid_body:
         core::rigid_body_inertia(model.rigid_body(block.index), velocity, w.inertia);
+        has_inertia = true;
         w.nodes = w.inertia.nodes;
         break;
       case core::ModelBlock::Kind::load:
@@ -207,27 +208,28 @@ struct GeneralizedAlpha::Implementation {
                                 model.load_factor(block.index, time), with_matrix, w.internal,
                                 block.element);
         w.internal.force = -w.internal.force;  // an external force enters the residual negatively
-        if (w.internal.tangent.size() > 0) w.internal.tangent = -w.internal.tangent;
+        has_internal = true;
+        has_tangent = with_matrix && w.internal.tangent.size() > 0;
+        if (has_tangent) w.internal.tangent = -w.internal.tangent;
         w.nodes = w.internal.nodes;
         break;
     }
     const int n = dofs_per_node * static_cast<int>(w.nodes.size());
-    w.residual = Eigen::VectorXd::Zero(n);
-    if (w.internal.force.size() > 0) w.residual += w.internal.force;
+    w.residual.setZero(n);
+    if (has_internal) w.residual += w.internal.force;
     w.node_acceleration.resize(n);
     for (std::size_t I = 0; I < w.nodes.size(); ++I)
       w.node_acceleration.segment<dofs_per_node>(dofs_per_node * I) =
           acceleration.segment<dofs_per_node>(dofs_per_node * w.nodes[I]);
-    if (w.inertia.mass.size() > 0) {
+    if (has_inertia) {
       w.residual.noalias() += w.inertia.mass * w.node_acceleration;
       w.residual += w.inertia.gyroscopic;
     }
     if (!with_matrix) return;
 
     K->setZero(n, n);
-    if (w.inertia.mass.size() > 0)
-      *K += c.mass * w.inertia.mass + c.damping * w.inertia.gyroscopic_tangent;
-    if (w.internal.tangent.size() > 0 && c.stiffness != 0.0) {
+    if (has_inertia) *K += c.mass * w.inertia.mass + c.damping * w.inertia.gyroscopic_tangent;
+    if (has_tangent && c.stiffness != 0.0) {
       apply_increment_tangent(w.nodes, increment, w.internal.tangent);
       *K += c.stiffness * w.internal.tangent;
     }
