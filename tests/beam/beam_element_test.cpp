@@ -87,58 +87,50 @@ double relative(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).norm() / std::max(b.norm(), 1e-300);
 }
 
-struct BeamCase {
-  int degree;
-  int elements;
-};
-
-}  // namespace
-
-TEST_CASE("beam internal force is the gradient of the strain energy", "[gebt]") {
-  for (BeamCase c : {BeamCase{1, 2}, BeamCase{2, 2}, BeamCase{3, 2}}) {
+/// Calls check(beam, e, q, description) for every element of two-element beams of degree 1, 2, 3
+/// in three random large deformations each (seeds first_seed, +1, +2).
+template <class Check>
+void for_each_deformed_element(unsigned first_seed, Check&& check) {
+  for (int degree = 1; degree <= 3; ++degree) {
     core::Configuration reference;
     const core::GeometricallyExactBeam beam(
-        {.centerline = test::straight_centerline(1.3, c.elements, c.degree),
-         .stiffness = test::generic_stiffness()},
+        {.centerline = test::straight_centerline(1.3, 2, degree), .stiffness = test::generic_stiffness()},
         reference);
-    for (unsigned seed : {1u, 2u, 3u}) {
+    for (unsigned seed = first_seed; seed < first_seed + 3; ++seed) {
       const core::Configuration q = deform(reference, seed);
       for (int e = 0; e < beam.element_count(); ++e) {
-        core::BeamElementResult r;
-        core::evaluate_beam_element(beam, e, q, core::BeamEvaluation::force, r);
-        const Eigen::MatrixXd fd = central_differences(
-            static_cast<int>(r.internal_force.size()), [&](const Eigen::VectorXd& d) {
-              return Eigen::VectorXd::Constant(1, energy(beam, e, perturbed(beam, e, q, d)));
-            });
-        INFO("p = " << c.degree << ", seed " << seed << ", element " << e);
-        CHECK(relative(r.internal_force, fd.transpose()) <= fd_tolerance);
+        INFO("p = " << degree << ", seed " << seed << ", element " << e);
+        check(beam, e, q);
       }
     }
   }
 }
 
+}  // namespace
+
+TEST_CASE("beam internal force is the gradient of the strain energy", "[gebt]") {
+  for_each_deformed_element(1u, [](const core::GeometricallyExactBeam& beam, int e, const core::Configuration& q) {
+    core::BeamElementResult r;
+    core::evaluate_beam_element(beam, e, q, core::BeamEvaluation::force, r);
+    const Eigen::MatrixXd fd = central_differences(
+        static_cast<int>(r.internal_force.size()), [&](const Eigen::VectorXd& d) {
+          return Eigen::VectorXd::Constant(1, energy(beam, e, perturbed(beam, e, q, d)));
+        });
+    CHECK(relative(r.internal_force, fd.transpose()) <= fd_tolerance);
+  });
+}
+
 TEST_CASE("beam stiffness is the exact symmetric Hessian in the exponential chart", "[gebt]") {
-  for (BeamCase c : {BeamCase{1, 2}, BeamCase{2, 2}, BeamCase{3, 2}}) {
-    core::Configuration reference;
-    const core::GeometricallyExactBeam beam(
-        {.centerline = test::straight_centerline(1.3, c.elements, c.degree),
-         .stiffness = test::generic_stiffness()},
-        reference);
-    for (unsigned seed : {4u, 5u, 6u}) {
-      const core::Configuration q = deform(reference, seed);
-      for (int e = 0; e < beam.element_count(); ++e) {
-        core::BeamElementResult r;
-        core::evaluate_beam_element(beam, e, q, core::BeamEvaluation::force_and_stiffness, r);
-        const Eigen::MatrixXd fd = central_differences(
-            static_cast<int>(r.internal_force.size()),
-            [&](const Eigen::VectorXd& d) { return chart_gradient(beam, e, q, d); });
-        const Eigen::MatrixXd K = r.stiffness;
-        INFO("p = " << c.degree << ", seed " << seed << ", element " << e);
-        CHECK(relative(K, K.transpose()) <= 1e-13);
-        CHECK(relative(K, fd) <= fd_tolerance);
-      }
-    }
-  }
+  for_each_deformed_element(4u, [](const core::GeometricallyExactBeam& beam, int e, const core::Configuration& q) {
+    core::BeamElementResult r;
+    core::evaluate_beam_element(beam, e, q, core::BeamEvaluation::force_and_stiffness, r);
+    const Eigen::MatrixXd fd = central_differences(
+        static_cast<int>(r.internal_force.size()),
+        [&](const Eigen::VectorXd& d) { return chart_gradient(beam, e, q, d); });
+    const Eigen::MatrixXd K = r.stiffness;
+    CHECK(relative(K, K.transpose()) <= 1e-13);
+    CHECK(relative(K, fd) <= fd_tolerance);
+  });
 }
 
 TEST_CASE("the local tangent is the derivative of the internal force along q + Delta", "[gebt]") {
