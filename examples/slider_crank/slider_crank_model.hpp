@@ -52,10 +52,10 @@ inline SliderCrank build_slider_crank(int elements) {
 
   const core::Configuration& q0 = s.model.state();
   using joints::Attachment;
-  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{crank_root, {}}, Attachment{-1, origin}, q0));
-  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{crank_tip, {}}, Attachment{coupler_root, {}}, q0));
-  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{coupler_tip, {}}, Attachment{s.slider_node, {}}, q0));
-  s.joints.push_back(std::make_unique<joints::PrismaticJoint>(Attachment{s.slider_node, {}}, origin,
+  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{crank_root}, Attachment{-1, origin}, q0));
+  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{crank_tip}, Attachment{coupler_root}, q0));
+  s.joints.push_back(std::make_unique<joints::SphericalJoint>(Attachment{coupler_tip}, Attachment{s.slider_node}, q0));
+  s.joints.push_back(std::make_unique<joints::PrismaticJoint>(Attachment{s.slider_node}, origin,
                                                               Eigen::Vector3d::UnitX(), true, q0));
   return s;
 }

@@ -15,6 +15,8 @@ namespace spar::joints {
 
 /// A point fixed in a node's material frame (node ≥ 0: p = x + R·offset, offset material), or a
 /// fixed inertial point of the ground (node = −1: p = offset, offset inertial).
+/// Write `Attachment{node}` for the node itself: `Attachment{node, {}}` value-initializes the
+/// offset with Eigen's default constructor, which leaves it uninitialized.
 struct Attachment {
   int node = -1;
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();
