@@ -31,7 +31,9 @@ public:
   }
 
   double number(const std::string& name, double fallback, const std::string& help) {
-    describe(name, std::to_string(fallback), help);
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%g", fallback);
+    describe(name, shown, help);
     const auto it = given_.find(name);
     if (it == given_.end()) return fallback;
     used_.push_back(name);

@@ -452,6 +452,7 @@ struct GeneralizedAlpha::Implementation {
       for (int dof : fixed_dofs) solution(dof) = 0.0;
       solver->solve(solution);
       ++counters.newton_iterations;
+      if (!solution.allFinite()) break;  // a failed iteration: the step is cut back
       const auto dx = solution.head(dof_count);
       const auto dlambda = solution.tail(multiplier_count);
       increment += dx;
