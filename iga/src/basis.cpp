@@ -17,8 +17,14 @@ void rationalize(BasisTable& table, int degree, int order, const double* local_w
     W[k] = table.row(k).head(degree + 1).sum();
   }
   // Quotient rule, lowest order first so that R^(k−l) is already rational (eq. 4.8).
-  constexpr std::array<std::array<double, 4>, 4> binomial{
-      {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}}};
+  constexpr auto binomial = [] {
+    std::array<std::array<double, max_derivative_order + 1>, max_derivative_order + 1> c{};
+    for (int k = 0; k <= max_derivative_order; ++k) {
+      c[k][0] = 1.0;
+      for (int l = 1; l <= k; ++l) c[k][l] = c[k - 1][l - 1] + c[k - 1][l];
+    }
+    return c;
+  }();
   const double inverse_weight = 1.0 / W[0];
   for (int k = 0; k <= order; ++k)
     for (int j = 0; j <= degree; ++j) {

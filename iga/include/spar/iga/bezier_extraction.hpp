@@ -24,7 +24,7 @@ namespace spar::iga {
 /// row a = local basis function span−p+a, column b = Bernstein polynomial B_b.
 std::vector<Eigen::MatrixXd> bezier_extraction(const KnotVector& U);
 
-/// The Bernstein polynomials of degree p on [0, 1] and their derivatives up to `order` ≤ 3.
+/// The Bernstein polynomials of degree p on [0, 1] and their derivatives up to `order` ≤ max_derivative_order.
 void bernstein_derivatives(int degree, double xi, int order, BasisTable& out);
 
 /// One element of the element loop: its interval, span and first basis function, the Gauss
@@ -43,7 +43,7 @@ struct ElementQuadrature {
 };
 
 /// The element loop for the B-spline basis of U (rational if `weights` are given, one per basis
-/// function): `points` Gauss–Legendre points per element, derivatives up to `order` ≤ 3 with
+/// function): `points` Gauss–Legendre points per element, derivatives up to `order` ≤ max_derivative_order with
 /// respect to u, computed as C_e B(ξ) with du = (last − first) dξ. jacobians are 1.
 std::vector<ElementQuadrature> element_quadrature(const KnotVector& U, int points, int order = 2);
 std::vector<ElementQuadrature> element_quadrature(const KnotVector& U, int points,

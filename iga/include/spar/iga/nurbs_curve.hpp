@@ -90,7 +90,7 @@ public:
   /// C(u); throws spar::Error for u outside the knot range.
   Point point(double u) const { return derivatives(u, 0).col(0); }
 
-  /// [C, C′, …, C^(order)](u), derivatives with respect to u, 0 ≤ order ≤ 3.
+  /// [C, C′, …, C^(order)](u), derivatives with respect to u, 0 ≤ order ≤ max_derivative_order.
   Derivatives derivatives(double u, int order) const {
     detail::check_derivative_order(order, "iga::NurbsCurve::derivatives");
     const int span = knots_.find_span(u);
