@@ -114,13 +114,12 @@ int main(int argc, char** argv) try {
   // 6. Write the deformed centerline (CSV and HDF5).
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
-  Eigen::MatrixXd centerline(samples, 3), undeformed(samples, 3);
+  const Eigen::MatrixXd centerline = beam.sample_centerline(model.state(), samples);
+  const Eigen::MatrixXd undeformed = beam.sample_centerline(model.reference(), samples);
   std::ofstream csv(out + "/centerline.csv");
   csv << "u,x,y,z,x0,y0,z0\n";
   for (int i = 0; i < samples; ++i) {
     const double u = static_cast<double>(i) / (samples - 1);
-    centerline.row(i) = beam.position_at(model.state(), u).transpose();
-    undeformed.row(i) = beam.position_at(model.reference(), u).transpose();
     csv << u << ',' << centerline(i, 0) << ',' << centerline(i, 1) << ',' << centerline(i, 2) << ','
         << undeformed(i, 0) << ',' << undeformed(i, 1) << ',' << undeformed(i, 2) << '\n';
   }

@@ -135,15 +135,12 @@ int main(int argc, char** argv) try {
     csv << integrator.time() << ',' << tip.x() << ',' << tip.y() << ',' << tip.z() << ',' << deflection << ','
         << energy.kinetic << ',' << energy.strain << ',' << energy.gravity << ',' << energy.total() << ','
         << drift << ',' << residual << ',' << integrator.last_step_iterations() << '\n';
-    Eigen::MatrixXd centerline(samples, 3);
-    for (int i = 0; i < samples; ++i)
-      centerline.row(i) = rod.position_at(q, static_cast<double>(i) / (samples - 1)).transpose();
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
                     .scalars = {energy.kinetic, energy.strain, energy.gravity, energy.total(), drift,
                                 deflection, residual, static_cast<double>(integrator.last_step_iterations())},
                     .probes = {tip},
-                    .centerlines = {centerline}});
+                    .centerlines = {rod.sample_centerline(q, samples)}});
   };
   record();
   core::ProgressBar progress(t_end, "flexible_pendulum");

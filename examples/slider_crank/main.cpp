@@ -85,12 +85,6 @@ int main(int argc, char** argv) try {
   csv.precision(15);
   csv << "t,rod2_deformation_rate,rod1_angular_speed,slider_x,rod2_mid_x,rod2_mid_y,rod2_mid_z,"
          "constraint_residual,newton_iterations\n";
-  auto centerline = [&](const core::GeometricallyExactBeam& rod) {
-    Eigen::MatrixXd points(10 * elements + 1, 3);
-    for (int i = 0; i < points.rows(); ++i)
-      points.row(i) = rod.position_at(model.state(), static_cast<double>(i) / (points.rows() - 1)).transpose();
-    return points;
-  };
   double max_speed = 0.0, max_rate = 0.0, max_residual = 0.0;
   auto record = [&]() {
     const core::Configuration& q = model.state();
@@ -116,7 +110,8 @@ int main(int argc, char** argv) try {
                     .scalars = {rate, speed, q.position[slider].x(), energy.kinetic, energy.strain,
                                 energy.gravity, residual, static_cast<double>(integrator.last_step_iterations())},
                     .probes = {midpoint, q.position[crank_tip]},
-                    .centerlines = {centerline(crank), centerline(coupler)}});
+                    .centerlines = {crank.sample_centerline(q, 10 * elements + 1),
+                                    coupler.sample_centerline(q, 10 * elements + 1)}});
   };
   record();
   core::ProgressBar progress(t_end, "slider_crank");

@@ -169,6 +169,19 @@ Eigen::Vector3d GeometricallyExactBeam::position_at(const Configuration& q, doub
   return x;
 }
 
+Eigen::MatrixXd GeometricallyExactBeam::sample_centerline(const Configuration& q, int points) const {
+  if (points < 2)
+    throw Error("a centerline sample needs at least 2 points, got " + std::to_string(points),
+                "core::GeometricallyExactBeam::sample_centerline", "ask for 2 or more points");
+  const iga::KnotVector& U = centerline_.knots();
+  Eigen::MatrixXd samples(points, 3);
+  for (int i = 0; i < points; ++i) {
+    const double u = U.first() + (U.last() - U.first()) * i / (points - 1);
+    samples.row(i) = position_at(q, u).transpose();
+  }
+  return samples;
+}
+
 Eigen::Matrix3d GeometricallyExactBeam::rotation_at(const Configuration& q, double u) const {
   iga::BasisTable table;
   const int e = element_at(centerline_, u, table);

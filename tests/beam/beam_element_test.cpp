@@ -260,3 +260,14 @@ TEST_CASE("the curved beam's stiffness is the exact Hessian", "[gebt]") {
       [&](const Eigen::VectorXd& d) { return chart_gradient(beam, 1, q, d); });
   CHECK(relative(Eigen::MatrixXd(r.stiffness), fd) <= fd_tolerance);
 }
+
+TEST_CASE("sample_centerline samples the knot range evenly", "[gebt]") {
+  core::Configuration reference;
+  const core::GeometricallyExactBeam beam(
+      {.centerline = test::straight_centerline(2.0, 3, 2), .stiffness = test::generic_stiffness()}, reference);
+  const Eigen::MatrixXd samples = beam.sample_centerline(reference, 5);
+  REQUIRE(samples.rows() == 5);
+  for (int i = 0; i < 5; ++i)
+    CHECK((samples.row(i).transpose() - Eigen::Vector3d(0.5 * i, 0.0, 0.0)).norm() <= 1e-15);
+  CHECK_THROWS_WITH(beam.sample_centerline(reference, 1), Catch::Contains("at least 2 points"));
+}

@@ -84,6 +84,9 @@ public:
   /// by the same interpolation as the strains (003 eqs. 39, 40, 42).
   Eigen::Vector3d position_at(const Configuration& q, double u) const;
   Eigen::Matrix3d rotation_at(const Configuration& q, double u) const;
+  /// The centerline at `points` ≥ 2 parameters equally spaced over the knot range, one row each
+  /// (what results files and plots draw).
+  Eigen::MatrixXd sample_centerline(const Configuration& q, int points) const;
 
 private:
   void build_elements(int quadrature_points);
