@@ -22,7 +22,7 @@ void beam_element(benchmark::State& state) {
   const bool stiffness = state.range(1) != 0;
   core::Configuration q;
   const core::GeometricallyExactBeam beam({.centerline = straight(4, degree), .stiffness = steel_square()}, q);
-  for (int k = 0; k < q.node_count(); ++k) {
+  for (int k = 0; k < q.block_count(); ++k) {
     q.position[k].y() += 0.05 * k * k;
     q.rotation[k] = lie::exp(Eigen::Vector3d(0.1, 0.2 * k, 0.3 * k));
   }

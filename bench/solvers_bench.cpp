@@ -17,9 +17,9 @@ namespace {
 
 using spar::core::PatternBlock;
 
-constexpr int dofs_per_node = 6;
+constexpr int frame_dofs = 6;
 constexpr int nodes_per_element = 4;  // cubic B-spline
-constexpr int element_dofs = dofs_per_node * nodes_per_element;
+constexpr int element_dofs = frame_dofs * nodes_per_element;
 
 /// A beam of `elements` cubic elements (element e on nodes e..e+3), a clamp (6 multiplier rows on
 /// node 0) and a pin (3 rows on the translations of the last node).
@@ -29,18 +29,18 @@ struct BeamSystem {
 };
 BeamSystem beam_system(int elements) {
   const int nodes = elements + nodes_per_element - 1;
-  const int node_dofs = dofs_per_node * nodes;
+  const int node_dofs = frame_dofs * nodes;
   BeamSystem system{node_dofs + 9, {}};
   for (int e = 0; e < elements; ++e) {
     std::vector<int> dofs;
-    for (int dof = dofs_per_node * e; dof < dofs_per_node * (e + nodes_per_element); ++dof)
+    for (int dof = frame_dofs * e; dof < frame_dofs * (e + nodes_per_element); ++dof)
       dofs.push_back(dof);
     system.blocks.push_back(PatternBlock::element(dofs));
   }
   for (int k = 0; k < 6; ++k) system.blocks.push_back(PatternBlock::coupling({node_dofs + k}, {k}));
   for (int k = 0; k < 3; ++k)
     system.blocks.push_back(
-        PatternBlock::coupling({node_dofs + 6 + k}, {node_dofs - dofs_per_node + k}));
+        PatternBlock::coupling({node_dofs + 6 + k}, {node_dofs - frame_dofs + k}));
   return system;
 }
 

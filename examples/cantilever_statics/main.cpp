@@ -97,6 +97,7 @@ int main(int argc, char** argv) try {
     model.add_load(core::NodalForce{.node = tip, .force = Eigen::Vector3d(0, load * EI / (length * length), 0)});
 
   // 4. Solve.
+  const core::Configuration undeformed_state = model.state();
   const solvers::StaticReport report = solvers::solve_static(model, {.load_steps = load_steps});
 
   // 5. Compare with the analytical solution.
@@ -115,7 +116,7 @@ int main(int argc, char** argv) try {
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
   const Eigen::MatrixXd centerline = beam.sample_centerline(model.state(), samples);
-  const Eigen::MatrixXd undeformed = beam.sample_centerline(model.reference(), samples);
+  const Eigen::MatrixXd undeformed = beam.sample_centerline(undeformed_state, samples);
   std::ofstream csv(out + "/centerline.csv");
   csv << "u,x,y,z,x0,y0,z0\n";
   for (int i = 0; i < samples; ++i) {

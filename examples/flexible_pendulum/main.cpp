@@ -107,7 +107,7 @@ int main(int argc, char** argv) try {
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
   core::ResultsWriter results(out + "/flexible_pendulum.h5",
-                              {.node_count = model.node_count(),
+                              {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
                                .scalar_names = {"kinetic_energy", "strain_energy", "gravity_potential",
                                                 "total_energy", "energy_drift", "chord_deflection",

@@ -81,7 +81,7 @@ int main(int argc, char** argv) try {
   // 7. Integrate and record.
   std::filesystem::create_directories(out);
   core::ResultsWriter results(out + "/heavy_top.h5",
-                              {.node_count = model.node_count(),
+                              {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
                                .scalar_names = {"kinetic_energy", "gravity_potential", "total_energy",
                                                 "rotation_error", "position_error", "constraint_residual",

@@ -70,7 +70,7 @@ int main(int argc, char** argv) try {
 
   std::filesystem::create_directories(out);
   core::ResultsWriter results(out + "/slider_crank.h5",
-                              {.node_count = model.node_count(),
+                              {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
                                .scalar_names = {"rod2_deformation_rate", "rod1_angular_speed",
                                                 "slider_position", "kinetic_energy", "strain_energy",

@@ -7,10 +7,13 @@
 namespace spar::joints {
 
 void check_node(int node, const core::Configuration& q0, std::string_view where) {
-  if (node < -1 || node >= q0.node_count())
+  if (node < -1 || node >= q0.block_count())
     throw Error("node " + std::to_string(node) + " does not exist (the configuration has " +
-                    std::to_string(q0.node_count()) + " nodes)",
-                where, "attach to a node index in [0, node count) or to the ground with node = -1");
+                    std::to_string(q0.block_count()) + " blocks)",
+                where, "attach to a node index in [0, block count) or to the ground with node = -1");
+  if (node >= 0 && !q0.is_frame(node))
+    throw Error("block " + std::to_string(node) + " is a vector block, not a frame (x, R)", where,
+                "attach this joint to a frame block (a beam control point or a rigid body)");
 }
 
 Attachment attach_at(int node, const Eigen::Vector3d& point, const core::Configuration& q0) {
@@ -31,11 +34,11 @@ JointFrames joint_frames(const Attachment& a, const Attachment& b, const core::C
                 "a joint connects two different nodes, or a node and the ground (node = -1)");
   JointFrames frames;
   if (!a.on_ground()) {
-    frames.a = {.node = a.node, .block = 0};
+    frames.a = {.node = a.node, .column = 0};
     frames.nodes.push_back(a.node);
   }
   if (!b.on_ground()) {
-    frames.b = {.node = b.node, .block = static_cast<int>(frames.nodes.size())};
+    frames.b = {.node = b.node, .column = core::frame_dofs * static_cast<int>(frames.nodes.size())};
     frames.nodes.push_back(b.node);
   }
   return frames;
@@ -47,7 +50,7 @@ JointFrame single_node_frame(int node, const core::Configuration& q0, std::strin
     throw Error(
         "the joint's attachment is on the ground", where,
         "attach it to a node (node >= 0): the ground cannot move along a line or be driven");
-  return {.node = node, .block = 0};
+  return {.node = node, .column = 0};
 }
 
 Eigen::Vector3d unit_vector(const Eigen::Vector3d& direction, std::string_view name,

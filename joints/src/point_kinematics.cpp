@@ -23,7 +23,7 @@ void AttachedPoint::add_multiplier_tangent(const core::Configuration& q,
 Eigen::Vector3d AttachedPoint::acceleration_terms(const core::Configuration& q,
                                                   const Eigen::VectorXd& velocity) const {
   if (frame_.on_ground()) return Eigen::Vector3d::Zero();
-  const Eigen::Vector3d omega = frame_.angular_velocity(velocity);
+  const Eigen::Vector3d omega = frame_.angular_velocity(q, velocity);
   return q.rotation[frame_.node] * omega.cross(omega.cross(offset_));
 }
 

@@ -37,13 +37,13 @@ void AttachedVector::add_multiplier_tangent_along(const core::Configuration& q,
 Eigen::Vector3d AttachedVector::rate(const core::Configuration& q,
                                      const Eigen::VectorXd& velocity) const {
   if (frame_.on_ground()) return Eigen::Vector3d::Zero();
-  return q.rotation[frame_.node] * frame_.angular_velocity(velocity).cross(vector_);
+  return q.rotation[frame_.node] * frame_.angular_velocity(q, velocity).cross(vector_);
 }
 
 Eigen::Vector3d AttachedVector::acceleration_terms(const core::Configuration& q,
                                                    const Eigen::VectorXd& velocity) const {
   if (frame_.on_ground()) return Eigen::Vector3d::Zero();
-  const Eigen::Vector3d omega = frame_.angular_velocity(velocity);
+  const Eigen::Vector3d omega = frame_.angular_velocity(q, velocity);
   return q.rotation[frame_.node] * omega.cross(omega.cross(vector_));
 }
 

@@ -169,7 +169,7 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
   const bool with_stiffness = (what == BeamEvaluation::force_and_stiffness);
   const detail::RelativeRotations rel = detail::relative_rotations(beam, e, q);
   const int k = rel.node_count;
-  const int n = dofs_per_node * k;  // = size of y = size of Δ
+  const int n = frame_dofs * k;  // = size of y = size of Δ
 
   // Stage 1 and 2: energy, gradient g_y and Hessian H_y in y (B5–B9).
   ElementVector g_y = ElementVector::Zero(n);
@@ -264,7 +264,7 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
 
 void add_local_tangent_correction(const Eigen::Ref<const Eigen::VectorXd>& force,
                                   Eigen::Ref<Eigen::MatrixXd> tangent) {
-  for (int I = 0; I < force.size() / dofs_per_node; ++I)
+  for (int I = 0; I < force.size() / frame_dofs; ++I)
     tangent.block<3, 3>(6 * I + 3, 6 * I + 3) +=
         0.5 * lie::hat(Eigen::Vector3d(force.segment<3>(6 * I + 3)));
 }

@@ -3,18 +3,25 @@
 
 namespace spar::core {
 
-void pull_back_to_converged_chart(const std::vector<Eigen::Vector3d>& phi, NodalContribution& c) {
-  const int k = static_cast<int>(c.nodes.size());
-  const bool with_tangent = c.tangent.size() > 0;
-  for (int I = 0; I < k; ++I) {
-    const Eigen::Vector3d& phi_I = phi[c.nodes[I]];
-    const Eigen::Matrix3d T = lie::tangent(phi_I);
-    const Eigen::Vector3d f_rot = c.force.segment<3>(6 * I + 3);
-    c.force.segment<3>(6 * I + 3) = T.transpose() * f_rot;
-    if (!with_tangent) continue;
-    c.tangent.middleRows<3>(6 * I + 3) = T.transpose() * c.tangent.middleRows<3>(6 * I + 3);
-    c.tangent.middleCols<3>(6 * I + 3) = c.tangent.middleCols<3>(6 * I + 3) * T;
-    c.tangent.block<3, 3>(6 * I + 3, 6 * I + 3) += lie::tangent_transpose_derivative(phi_I, f_rot);
+// docs/beam.md eq. B13.
+void pull_back_to_converged_chart(const Configuration& q, const std::vector<int>& blocks,
+                                  const Eigen::VectorXd& chart, Eigen::Ref<Eigen::VectorXd> force,
+                                  Eigen::MatrixXd* tangent) {
+  Eigen::Index at = 0;
+  for (const int b : blocks) {
+    const Block& block = q.blocks[b];
+    if (block.kind == BlockKind::frame) {
+      const Eigen::Vector3d phi = chart.segment<3>(block.offset + 3);
+      const Eigen::Matrix3d T = lie::tangent(phi);
+      const Eigen::Vector3d f_rot = force.segment<3>(at + 3);
+      force.segment<3>(at + 3) = T.transpose() * f_rot;
+      if (tangent) {
+        tangent->middleRows<3>(at + 3) = T.transpose() * tangent->middleRows<3>(at + 3);
+        tangent->middleCols<3>(at + 3) = tangent->middleCols<3>(at + 3) * T;
+        tangent->block<3, 3>(at + 3, at + 3) += lie::tangent_transpose_derivative(phi, f_rot);
+      }
+    }
+    at += block.size;
   }
 }
 

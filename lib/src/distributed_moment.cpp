@@ -12,10 +12,9 @@ namespace spar::core {
 void distributed_moment_contribution(const GeometricallyExactBeam& beam, int e,
                                      const Configuration& q,
                                      const Eigen::Vector3d& moment_per_length, MomentFrame frame,
-                                     bool with_tangent, NodalContribution& out) {
+                                     Eigen::VectorXd& force, Eigen::MatrixXd* tangent) {
   const detail::RelativeRotations rel = detail::relative_rotations(beam, e, q);
   const int k = rel.node_count;
-  const int first = beam.node(beam.element(e).first_control_point);
   // Variables y = (a, ψ_1 … ψ_p): block 0 is a, block I is ψ_I.
   Eigen::VectorXd f_y = Eigen::VectorXd::Zero(3 * k);
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(3 * k, 3 * k);  // ∂f_y/∂y along q ⊕ Δ
@@ -67,13 +66,9 @@ void distributed_moment_contribution(const GeometricallyExactBeam& beam, int e,
     J.block<3, 3>(3 * I, 0) = -T_inverse[I].transpose();
   }
   const Eigen::VectorXd f_rot = J.transpose() * f_y;
-  out.nodes.resize(k);
-  out.force = Eigen::VectorXd::Zero(dofs_per_node * k);
-  for (int I = 0; I < k; ++I) {
-    out.nodes[I] = first + I;
-    out.force.segment<3>(6 * I + 3) = f_rot.segment<3>(3 * I);
-  }
-  if (!with_tangent) return;
+  force = Eigen::VectorXd::Zero(frame_dofs * k);
+  for (int I = 0; I < k; ++I) force.segment<3>(6 * I + 3) = f_rot.segment<3>(3 * I);
+  if (!tangent) return;
   // ∂(Jᵀ f_y)/∂Δ = Jᵀ G J + (the derivative of Jᵀ at fixed f_y through ψ).
   Eigen::MatrixXd K_rot = J.transpose() * G * J;
   for (int I = 1; I < k; ++I) {
@@ -86,10 +81,10 @@ void distributed_moment_contribution(const GeometricallyExactBeam& beam, int e,
     K_rot.block<3, 3>(0, 3 * I) += d_first * T_inverse[I];
     K_rot.block<3, 3>(0, 0) -= d_first * T_inverse[I].transpose();
   }
-  out.tangent = Eigen::MatrixXd::Zero(dofs_per_node * k, dofs_per_node * k);
+  tangent->setZero(frame_dofs * k, frame_dofs * k);
   for (int I = 0; I < k; ++I)
     for (int L = 0; L < k; ++L)
-      out.tangent.block<3, 3>(6 * I + 3, 6 * L + 3) = K_rot.block<3, 3>(3 * I, 3 * L);
+      tangent->block<3, 3>(6 * I + 3, 6 * L + 3) = K_rot.block<3, 3>(3 * I, 3 * L);
 }
 
 }  // namespace spar::core

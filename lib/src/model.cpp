@@ -1,7 +1,9 @@
 #include <spar/core/model.hpp>
-#include <spar/core/distributed_moment.hpp>
+
+#include <spar/core/elements/geometrically_exact_beam_element.hpp>
+#include <spar/core/elements/load_elements.hpp>
+#include <spar/core/elements/rigid_body_element.hpp>
 #include <spar/error.hpp>
-#include <spar/lie/hat.hpp>
 #include <spar/lie/log.hpp>
 
 #include <Eigen/Eigenvalues>
@@ -13,21 +15,55 @@ namespace spar::core {
 
 namespace {
 
-/// The 6k global dofs of k consecutive nodes starting at `first`.
-std::vector<int> node_dofs(int first, int count) {
-  std::vector<int> dofs;
-  for (int i = 0; i < dofs_per_node * count; ++i) dofs.push_back(dofs_per_node * first + i);
-  return dofs;
+void check_finite(const Eigen::Ref<const Eigen::MatrixXd>& values, const std::string& what,
+                  const char* where) {
+  if (!values.allFinite())
+    throw Error(what + " has a NaN or infinite entry", where, "give finite values");
 }
 
 }  // namespace
 
+int Model::add_frame(const Eigen::Vector3d& x, const Eigen::Matrix3d& R) {
+  const char* where = "core::Model::add_frame";
+  check_finite(x, "the frame's position", where);
+  lie::check_rotation(R, where);
+  ++structure_version_;
+  return state_.add_frame(x, R);
+}
+
+int Model::add_vector(const Eigen::VectorXd& p) {
+  check_finite(p, "the vector block", "core::Model::add_vector");
+  ++structure_version_;
+  return state_.add_vector(p);
+}
+
+int Model::add_element(std::unique_ptr<Element> element) {
+  const char* where = "core::Model::add_element";
+  if (!element) throw Error("null element", where, "pass an element object");
+  for (const int b : element->blocks()) check_block(b, where);
+  elements_.push_back(std::move(element));
+  ++structure_version_;
+  return element_count() - 1;
+}
+
+void Model::replace_element(int i, std::unique_ptr<Element> element) {
+  const char* where = "core::Model::replace_element";
+  if (i < 0 || i >= element_count())
+    throw Error("element " + std::to_string(i) + " does not exist", where,
+                "use an index returned by add_element");
+  if (!element) throw Error("null element", where, "pass an element object");
+  for (const int b : element->blocks()) check_block(b, where);
+  elements_[i] = std::move(element);
+  ++structure_version_;
+}
+
 int Model::add_beam(const BeamParameters& parameters) {
-  const int first_new = reference_.node_count();
-  beams_.emplace_back(parameters, reference_);
-  for (int k = first_new; k < reference_.node_count(); ++k)
-    state_.add_node(reference_.position[k], reference_.rotation[k]);
-  return beam_count() - 1;
+  beams_.push_back(std::make_unique<GeometricallyExactBeam>(parameters, state_));
+  ++structure_version_;
+  const int b = beam_count() - 1;
+  for (int e = 0; e < beams_[b]->element_count(); ++e)
+    add_element(std::make_unique<GeometricallyExactBeamElement>(*beams_[b], b, e));
+  return b;
 }
 
 const GeometricallyExactBeam& Model::beam(int b) const {
@@ -35,30 +71,38 @@ const GeometricallyExactBeam& Model::beam(int b) const {
     throw Error("beam " + std::to_string(b) + " does not exist (the model has " +
                     std::to_string(beam_count()) + ")",
                 "core::Model::beam", "use an index returned by add_beam");
-  return beams_[b];
+  return *beams_[b];
 }
 
-void Model::check_node(int node, const char* where) const {
-  if (node < 0 || node >= node_count())
-    throw Error("node " + std::to_string(node) + " does not exist (the model has " +
-                    std::to_string(node_count()) + " nodes)",
-                where, "use a node of a beam, e.g. beam.node(control_point)");
+void Model::check_block(int block, const char* where) const {
+  if (block < 0 || block >= block_count())
+    throw Error("block " + std::to_string(block) + " does not exist (the model has " +
+                    std::to_string(block_count()) + " blocks)",
+                where, "use a block of the model, e.g. beam.node(control_point)");
+}
+
+void Model::check_frame(int block, const char* where) const {
+  check_block(block, where);
+  if (!state_.is_frame(block))
+    throw Error("block " + std::to_string(block) + " is a vector block, not a frame", where,
+                "apply forces, moments and rotation conditions to frame blocks");
 }
 
 int Model::add_rigid_body(const RigidBodyParameters& p) {
   const char* where = "core::Model::add_rigid_body";
   if (!(p.mass > 0.0) || !std::isfinite(p.mass))
-    throw Error("rigid body mass must be positive, got " + std::to_string(p.mass), where,
+    throw Error("rigid body mass must be positive and finite, got " + std::to_string(p.mass), where,
                 "give the mass in kg");
+  check_finite(p.center_of_mass, "the centre of mass", where);
   if (!p.inertia.allFinite() || (p.inertia - p.inertia.transpose()).norm() > 1e-12 * p.inertia.norm() ||
       !(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(p.inertia).eigenvalues().minCoeff() > 0.0))
     throw Error("rigid body inertia tensor is not symmetric positive definite", where,
                 "give the inertia about the centre of mass in the body frame (kg m^2)");
-  lie::check_rotation(p.rotation, where);
-  const int node = reference_.add_node(p.center_of_mass, p.rotation);
-  state_.add_node(p.center_of_mass, p.rotation);
+  const int node = add_frame(p.center_of_mass, p.rotation);
   rigid_bodies_.push_back({node, p.mass, p.inertia});
-  return rigid_body_count() - 1;
+  const int index = rigid_body_count() - 1;
+  add_element(std::make_unique<RigidBodyElement>(rigid_bodies_.back(), index));
+  return index;
 }
 
 const RigidBody& Model::rigid_body(int b) const {
@@ -68,158 +112,70 @@ const RigidBody& Model::rigid_body(int b) const {
   return rigid_bodies_[b];
 }
 
-double Model::load_factor(int load, double t) const {
-  return load_histories_[load] ? load_histories_[load](t) : 1.0;
-}
-
-Eigen::VectorXd Model::gravity_force() const {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(dof_count());
-  for (int b = 0; b < beam_count(); ++b) {
-    NodalContribution c;
-    const double rho_a = beams_[b].inertia().mass_per_length;
-    load_contribution(*this, DistributedForce{.beam = b, .force_per_length = rho_a * gravity_},
-                      state_, 1.0, false, c);
-    for (std::size_t I = 0; I < c.nodes.size(); ++I)
-      f.segment<dofs_per_node>(dofs_per_node * c.nodes[I]) += c.force.segment<dofs_per_node>(dofs_per_node * I);
-  }
-  for (const RigidBody& body : rigid_bodies_)
-    f.segment<3>(dofs_per_node * body.node) += body.mass * gravity_;
-  return f;
-}
-
-double Model::gravity_potential(const Configuration& q) const {
-  const Eigen::VectorXd f = gravity_force();
-  double potential = 0.0;
-  for (int k = 0; k < q.node_count(); ++k) potential -= f.segment<3>(dofs_per_node * k).dot(q.position[k]);
-  return potential;
-}
-
 void Model::add_load(const Load& load, LoadHistory history) {
-  if (const auto* f = std::get_if<NodalForce>(&load)) check_node(f->node, "core::Model::add_load");
-  if (const auto* m = std::get_if<NodalMoment>(&load)) check_node(m->node, "core::Model::add_load");
-  if (const auto* d = std::get_if<DistributedForce>(&load)) beam(d->beam);
-  if (const auto* d = std::get_if<DistributedMoment>(&load)) beam(d->beam);
-  loads_.push_back(load);
-  load_histories_.push_back(std::move(history));
+  const char* where = "core::Model::add_load";
+  const int index = load_count_++;
+  if (const auto* f = std::get_if<NodalForce>(&load)) {
+    check_frame(f->node, where);
+    check_finite(f->force, "the force", where);
+  } else if (const auto* m = std::get_if<NodalMoment>(&load)) {
+    check_frame(m->node, where);
+    check_finite(m->moment, "the moment", where);
+  }
+  if (std::holds_alternative<NodalForce>(load) || std::holds_alternative<NodalMoment>(load)) {
+    add_element(std::make_unique<NodalLoadElement>(load, std::move(history), index));
+    return;
+  }
+  const int b = std::holds_alternative<DistributedForce>(load) ? std::get<DistributedForce>(load).beam
+                                                               : std::get<DistributedMoment>(load).beam;
+  const GeometricallyExactBeam& carrier = beam(b);
+  if (const auto* d = std::get_if<DistributedForce>(&load))
+    check_finite(d->force_per_length, "the force per length", where);
+  if (const auto* d = std::get_if<DistributedMoment>(&load))
+    check_finite(d->moment_per_length, "the moment per length", where);
+  for (int e = 0; e < carrier.element_count(); ++e)
+    add_element(std::make_unique<DistributedLoadElement>(load, carrier, e, history, index));
 }
 
-void Model::fix(int node, Fix what) {
-  check_node(node, "core::Model::fix");
+void Model::set_gravity(const Eigen::Vector3d& g) {
+  check_finite(g, "gravity", "core::Model::set_gravity");
+  gravity_ = g;
+}
+
+void Model::fix(int block, Fix what) {
+  const char* where = "core::Model::fix";
+  check_block(block, where);
+  const Block& b = state_.blocks[block];
+  if (what != Fix::all && b.kind != BlockKind::frame)
+    throw Error("translations or rotations of vector block " + std::to_string(block), where,
+                "fix a vector block with Fix::all");
   const int first = (what == Fix::rotations) ? 3 : 0;
-  const int last = (what == Fix::translations) ? 3 : 6;
-  for (int i = first; i < last; ++i) fixed_dofs_.push_back(dofs_per_node * node + i);
+  const int last = (what == Fix::translations) ? 3 : b.size;
+  for (int i = first; i < last; ++i) fixed_dofs_.push_back(b.offset + i);
   std::sort(fixed_dofs_.begin(), fixed_dofs_.end());
   fixed_dofs_.erase(std::unique(fixed_dofs_.begin(), fixed_dofs_.end()), fixed_dofs_.end());
 }
 
-std::vector<ModelBlock> Model::blocks() const {
-  std::vector<ModelBlock> blocks;
-  for (int b = 0; b < beam_count(); ++b)
-    for (int e = 0; e < beams_[b].element_count(); ++e)
-      blocks.push_back({ModelBlock::Kind::beam_element, b, e});
-  for (int r = 0; r < rigid_body_count(); ++r) blocks.push_back({ModelBlock::Kind::rigid_body, r, 0});
-  for (int l = 0; l < static_cast<int>(loads_.size()); ++l)
-    if (const auto* m = std::get_if<DistributedMoment>(&loads_[l]))
-      for (int e = 0; e < beams_[m->beam].element_count(); ++e)
-        blocks.push_back({ModelBlock::Kind::load, l, e});
-    else if (load_has_tangent(loads_[l]))
-      blocks.push_back({ModelBlock::Kind::load, l, 0});
-  return blocks;
-}
-
-std::vector<PatternBlock> Model::pattern_blocks() const {
-  std::vector<PatternBlock> pattern;
-  for (const ModelBlock& block : blocks()) {
-    switch (block.kind) {
-      case ModelBlock::Kind::beam_element: {
-        const GeometricallyExactBeam& beam = beams_[block.index];
-        pattern.push_back(PatternBlock::element(
-            node_dofs(beam.node(beam.element(block.element).first_control_point), beam.degree() + 1)));
-        break;
-      }
-      case ModelBlock::Kind::rigid_body:
-        pattern.push_back(PatternBlock::element(node_dofs(rigid_bodies_[block.index].node, 1)));
-        break;
-      case ModelBlock::Kind::load:
-        if (const auto* m = std::get_if<DistributedMoment>(&loads_[block.index])) {
-          const GeometricallyExactBeam& beam = beams_[m->beam];
-          pattern.push_back(PatternBlock::element(
-              node_dofs(beam.node(beam.element(block.element).first_control_point), beam.degree() + 1)));
-        } else {
-          pattern.push_back(PatternBlock::element(node_dofs(std::get<NodalMoment>(loads_[block.index]).node, 1)));
-        }
-        break;
+void Model::replace_state(Configuration state) {
+  const char* where = "core::Model::replace_state";
+  check_finite(state.values, "the new configuration", where);
+  for (int b = 0; b < state.block_count(); ++b)
+    if (state.is_frame(b)) {
+      check_finite(state.position[b], "a frame position of the new configuration", where);
+      lie::check_rotation(state.rotation[b], where);
     }
-  }
-  return pattern;
+  state_ = std::move(state);
+  ++structure_version_;
 }
 
-void beam_element_contribution(const Model& model, int b, int e, const Configuration& q,
-                               bool with_tangent, NodalContribution& out) {
-  const GeometricallyExactBeam& beam = model.beam(b);
-  BeamElementResult result;
-  evaluate_beam_element(beam, e, q,
-                        with_tangent ? BeamEvaluation::force_and_stiffness : BeamEvaluation::force,
-                        result);
-  const int first = beam.node(beam.element(e).first_control_point);
-  out.nodes.resize(beam.degree() + 1);
-  for (int I = 0; I <= beam.degree(); ++I) out.nodes[I] = first + I;
-  out.force = result.internal_force;
-  out.energy = result.strain_energy;
-  if (!with_tangent) return;
-  out.tangent = result.stiffness;
-  add_local_tangent_correction(out.force, out.tangent);
-}
-
-bool load_has_tangent(const Load& load) {
-  return std::holds_alternative<NodalMoment>(load) || std::holds_alternative<DistributedMoment>(load);
-}
-
-void load_contribution(const Model& model, const Load& load, const Configuration& q,
-                       double load_factor, bool with_tangent, NodalContribution& out, int element) {
-  out.tangent.resize(0, 0);
-  out.energy = 0.0;
-  if (const auto* m = std::get_if<DistributedMoment>(&load)) {
-    distributed_moment_contribution(model.beam(m->beam), element, q,
-                                    load_factor * m->moment_per_length, m->frame, with_tangent, out);
-    return;
-  }
-  if (const auto* f = std::get_if<NodalForce>(&load)) {
-    out.nodes = {f->node};
-    out.force = Eigen::VectorXd::Zero(dofs_per_node);
-    out.force.head<3>() = load_factor * f->force;
-  } else if (const auto* m = std::get_if<NodalMoment>(&load)) {
-    out.nodes = {m->node};
-    out.force = Eigen::VectorXd::Zero(dofs_per_node);
-    // Virtual work δφᵀ M for a material moment; δφᵀ Rᵀ M for an inertial one (003 eq. 33).
-    const Eigen::Vector3d local = (m->frame == MomentFrame::material)
-                                      ? Eigen::Vector3d(load_factor * m->moment)
-                                      : Eigen::Vector3d(load_factor * q.rotation[m->node].transpose() * m->moment);
-    out.force.tail<3>() = local;
-    if (with_tangent) {
-      // A material moment is constant in local components; an inertial one gives
-      // (R exp(Δ))ᵀ M = exp(−Δ) Rᵀ M ≈ RᵀM + hat(RᵀM) Δ.
-      out.tangent = Eigen::MatrixXd::Zero(dofs_per_node, dofs_per_node);
-      if (m->frame == MomentFrame::inertial) out.tangent.bottomRightCorner<3, 3>() = lie::hat(local);
-    }
-  } else {
-    // Consistent nodal forces f_I = ∫ N_I q dS (003 eq. 33), with the beam's Gauss points of
-    // part 0 (for p = 1 the two-point rule, exact for these integrands on a straight beam).
-    const auto& d = std::get<DistributedForce>(load);
-    const GeometricallyExactBeam& beam = model.beam(d.beam);
-    out.nodes.resize(beam.control_point_count());
-    for (int I = 0; I < beam.control_point_count(); ++I) out.nodes[I] = beam.node(I);
-    out.force = Eigen::VectorXd::Zero(dofs_per_node * beam.control_point_count());
-    for (int e = 0; e < beam.element_count(); ++e) {
-      const BeamElement& element = beam.element(e);
-      for (const BeamGaussPoint& gp : element.gauss_points) {
-        if (gp.part != 0) continue;
-        for (int I = 0; I <= beam.degree(); ++I)
-          out.force.segment<3>(dofs_per_node * (element.first_control_point + I)) +=
-              load_factor * gp.weight * gp.shape[I] * d.force_per_length;
-      }
-    }
-  }
+void Model::set_fixed_dofs(std::vector<int> dofs) {
+  for (const int dof : dofs)
+    if (dof < 0 || dof >= dof_count())
+      throw Error("fixed dof " + std::to_string(dof) + " is outside [0, " + std::to_string(dof_count()) + ")",
+                  "core::Model::set_fixed_dofs", "give global dofs of the current layout");
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  fixed_dofs_ = std::move(dofs);
 }
 
 }  // namespace spar::core

@@ -15,15 +15,16 @@
 #include <spar/lie/tangent.hpp>
 
 #include "round_off.hpp"
+#include "system_assembly.hpp"
 
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <string>
 
 namespace spar::solvers {
 
-using core::dofs_per_node;
 
 IterationMatrix iteration_matrix_from_string(std::string_view name) {
   if (name == "update") return IterationMatrix::update;
@@ -56,297 +57,134 @@ GeneralizedAlphaParameters GeneralizedAlphaParameters::from_spectral_radius(doub
 
 namespace {
 
-/// Coefficients of one assembly of the iteration matrix: c_M M + c_C C + c_K (K + K_λ) T.
-struct MatrixCoefficients {
-  double mass = 1.0, damping = 0.0, stiffness = 0.0;
-};
+using detail::Chart;
+using detail::MatrixCoefficients;
 
-std::vector<int> dofs_of(const std::vector<int>& nodes) {
-  std::vector<int> dofs;
-  for (int node : nodes)
-    for (int i = 0; i < dofs_per_node; ++i) dofs.push_back(dofs_per_node * node + i);
-  return dofs;
-}
-
-/// Right-multiplies the rotational columns of a node-blocked matrix by T(ΔΘ_node) (Brüls et al.:
-/// K T(h Δq)), row by row so that nothing is allocated.
-void apply_increment_tangent(const std::vector<int>& nodes, const Eigen::VectorXd& increment,
-                             Eigen::Ref<Eigen::MatrixXd> K) {
-  for (std::size_t I = 0; I < nodes.size(); ++I) {
-    const Eigen::Vector3d theta = increment.segment<3>(dofs_per_node * nodes[I] + 3);
-    if (theta.squaredNorm() == 0.0) continue;
-    const Eigen::Matrix3d T = lie::tangent(theta);
-    const Eigen::Index column = dofs_per_node * static_cast<Eigen::Index>(I) + 3;
-    for (Eigen::Index row = 0; row < K.rows(); ++row) {
-      const Eigen::RowVector3d entries = K.block<1, 3>(row, column);
-      K.block<1, 3>(row, column) = entries * T;
-    }
-  }
+std::vector<joints::Constraint*> pointers(const ConstraintList& constraints) {
+  std::vector<joints::Constraint*> raw;
+  for (const auto& constraint : constraints) raw.push_back(constraint.get());
+  return raw;
 }
 
 }  // namespace
 
 struct GeneralizedAlpha::Implementation {
-  /// Work of one model block (beam element, rigid body, load).
-  struct BlockWork {
-    core::NodalContribution internal;
-    core::InertiaContribution inertia;
-    Eigen::VectorXd residual;  // its part of M v̇ + f_gyr + f_int − f_ext
-    std::vector<int> nodes;
-    Eigen::VectorXd node_acceleration;  // scratch
-  };
-  /// The rotational blocks of a model block at t = 0 (frozen strategy): mass, gyroscopic and
-  /// stiffness parts kept apart so they combine with the current h.
-  struct FrozenBlock {
-    Eigen::MatrixXd mass, damping, stiffness;
-  };
-  struct ConstraintWork {
-    std::vector<int> nodes;
-    int first_multiplier = 0;
-    Eigen::VectorXd value;
-    Eigen::MatrixXd jacobian;
-    Eigen::VectorXd force;  // Bᵀλ (scratch)
-  };
-
   core::Model& model;
   ConstraintList constraints;
   DynamicOptions options;
   GeneralizedAlphaParameters alpha;
-  int dof_count = 0, multiplier_count = 0;
-  std::vector<core::ModelBlock> model_blocks;
-  std::vector<BlockWork> blocks;
-  std::vector<FrozenBlock> frozen;
-  std::vector<ConstraintWork> constraint_work;
-  std::unique_ptr<core::SparsePattern> pattern;
+  detail::SystemAssembly assembly;
   std::unique_ptr<LinearSolver> solver;
-  std::vector<int> fixed_dofs;
-  Eigen::VectorXd gravity;
+  long structure_version = 0;
 
   double t = 0.0;
   Eigen::VectorXd velocity, acceleration, algorithmic_acceleration, lambda;
   bool initialized = false;
   // Newton state of the current step.
   core::Configuration start;
-  Eigen::VectorXd increment, residual, solution, scale;
+  Eigen::VectorXd increment, solution;
   bool have_factorization = false, refactor_requested = false;
   double factorized_step = 0.0;
   int last_iterations = 0;
+  std::string last_failure;  // why the last failed iteration failed, for the final message
   DynamicCounters counters;
+  // Energy balance (eq. D8).
+  double initial_energy = 0.0, external_work = 0.0, last_power = 0.0;
+  std::vector<std::pair<double, std::string>> events;
 
   Implementation(core::Model& m, ConstraintList c, const DynamicOptions& o)
-      : model(m), constraints(std::move(c)), options(o) {
-    validate_options();
-    alpha = GeneralizedAlphaParameters::from_spectral_radius(options.spectral_radius);
-    dof_count = model.dof_count();
-    model_blocks = model.blocks();
-    blocks.resize(model_blocks.size());
-    std::vector<core::PatternBlock> pattern_blocks = model.pattern_blocks();
-    for (auto& constraint : constraints) {
-      if (!constraint) throw Error("null constraint", "solvers::GeneralizedAlpha", "pass joints");
-      ConstraintWork work;
-      work.nodes = constraint->nodes();
-      for (int node : work.nodes)
-        if (node < 0 || node >= model.node_count())
-          throw Error("a constraint refers to node " + std::to_string(node) + ", which the model does not have",
-                      "solvers::GeneralizedAlpha", "build joints on the model they constrain");
-      work.first_multiplier = multiplier_count;
-      multiplier_count += constraint->equation_count();
-      // One square block per constraint over its node dofs and its multipliers.
-      std::vector<int> dofs = dofs_of(work.nodes);
-      for (int i = 0; i < constraint->equation_count(); ++i) dofs.push_back(dof_count + work.first_multiplier + i);
-      pattern_blocks.push_back(core::PatternBlock::element(dofs));
-      constraint_work.push_back(std::move(work));
-    }
-    pattern = std::make_unique<core::SparsePattern>(dof_count + multiplier_count, pattern_blocks);
-    solver = make_linear_solver(options.linear_solver);
-    solver->analyze(pattern->matrix());
-    fixed_dofs = model.fixed_dofs();
-    gravity = model.gravity_force();
-    velocity = Eigen::VectorXd::Zero(dof_count);
-    acceleration = algorithmic_acceleration = Eigen::VectorXd::Zero(dof_count);
-    lambda = Eigen::VectorXd::Zero(multiplier_count);
-    increment = Eigen::VectorXd::Zero(dof_count);
-    residual = solution = Eigen::VectorXd::Zero(dof_count + multiplier_count);
+      : model(m),
+        constraints(std::move(c)),
+        options(o),
+        alpha(validated_parameters(o)),
+        assembly(m, pointers(constraints), o.assembly),
+        solver(make_linear_solver(o.linear_solver)),
+        structure_version(m.structure_version()) {
+    solver->analyze(assembly.pattern().matrix());
+    const int n = assembly.dof_count();
+    velocity = acceleration = algorithmic_acceleration = increment = Eigen::VectorXd::Zero(n);
+    lambda = Eigen::VectorXd::Zero(assembly.multiplier_count());
+    solution = Eigen::VectorXd::Zero(assembly.size());
+    check_units();
   }
 
-  void validate_options() const {
+  static GeneralizedAlphaParameters validated_parameters(const DynamicOptions& options) {
     const char* where = "solvers::GeneralizedAlpha";
     if (!(options.time_step > 0.0) || !std::isfinite(options.time_step))
-      throw Error("time step must be positive", where, "give DynamicOptions::time_step > 0");
-    if (!(options.tolerance > 0.0) || options.max_iterations < 1 || options.max_cutbacks < 0)
-      throw Error("tolerance must be positive, max_iterations >= 1, max_cutbacks >= 0", where,
+      throw Error("time step must be positive and finite", where, "give DynamicOptions::time_step > 0");
+    if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance) || options.max_iterations < 1 ||
+        options.max_cutbacks < 0)
+      throw Error("tolerance must be positive and finite, max_iterations >= 1, max_cutbacks >= 0", where,
                   "fix the DynamicOptions");
+    return GeneralizedAlphaParameters::from_spectral_radius(options.spectral_radius);
   }
 
-  // Evaluation -----------------------------------------------------------------------------------
-
-  /// Fills blocks[id] (and K when given) at the model's current state, velocity, acceleration.
-  void compute_model_block(int id, double time, const MatrixCoefficients& c, Eigen::MatrixXd* K) {
-    const core::ModelBlock& block = model_blocks[id];
-    BlockWork& w = blocks[id];
-    const core::Configuration& q = model.state();
-    const bool with_matrix = (K != nullptr);
-    const bool frozen_now = with_matrix && options.iteration_matrix == IterationMatrix::frozen &&
-                            frozen.size() == model_blocks.size();
-    // Which parts this block has (its buffers keep their capacity from one call to the next).
-    bool has_internal = false, has_tangent = false, has_inertia = false;
-    switch (block.kind) {
-      case core::ModelBlock::Kind::beam_element:
-        has_tangent = with_matrix && c.stiffness != 0.0;
-        core::beam_element_contribution(model, block.index, block.element, q, has_tangent, w.internal);
-        core::beam_element_inertia(model.beam(block.index), block.element, velocity, w.inertia);
-        has_internal = has_inertia = true;
-        w.nodes = w.internal.nodes;
-        break;
-      case core::ModelBlock::Kind::rigid_body:
-        core::rigid_body_inertia(model.rigid_body(block.index), velocity, w.inertia);
-        has_inertia = true;
-        w.nodes = w.inertia.nodes;
-        break;
-      case core::ModelBlock::Kind::load:
-        core::load_contribution(model, model.loads()[block.index], q,
-                                model.load_factor(block.index, time), with_matrix, w.internal,
-                                block.element);
-        w.internal.force = -w.internal.force;  // an external force enters the residual negatively
-        has_internal = true;
-        has_tangent = with_matrix && w.internal.tangent.size() > 0;
-        if (has_tangent) w.internal.tangent = -w.internal.tangent;
-        w.nodes = w.internal.nodes;
-        break;
-    }
-    const int n = dofs_per_node * static_cast<int>(w.nodes.size());
-    w.residual.setZero(n);
-    if (has_internal) w.residual += w.internal.force;
-    w.node_acceleration.resize(n);
-    for (std::size_t I = 0; I < w.nodes.size(); ++I)
-      w.node_acceleration.segment<dofs_per_node>(dofs_per_node * I) =
-          acceleration.segment<dofs_per_node>(dofs_per_node * w.nodes[I]);
-    if (has_inertia) {
-      w.residual.noalias() += w.inertia.mass * w.node_acceleration;
-      w.residual += w.inertia.gyroscopic;
-    }
-    if (!with_matrix) return;
-
-    K->setZero(n, n);
-    if (has_inertia) *K += c.mass * w.inertia.mass + c.damping * w.inertia.gyroscopic_tangent;
-    if (has_tangent && c.stiffness != 0.0) {
-      apply_increment_tangent(w.nodes, increment, w.internal.tangent);
-      *K += c.stiffness * w.internal.tangent;
-    }
-    if (frozen_now) {
-      // 003 §5.1: the rotation–rotation blocks J_θ stay those of t = 0.
-      const FrozenBlock& f = frozen[id];
-      for (std::size_t I = 0; I < w.nodes.size(); ++I)
-        for (std::size_t J = 0; J < w.nodes.size(); ++J) {
-          auto block_of = [&](const Eigen::MatrixXd& A) {
-            return A.size() > 0 ? Eigen::Matrix3d(A.block<3, 3>(6 * I + 3, 6 * J + 3)) : Eigen::Matrix3d::Zero();
-          };
-          K->block<3, 3>(6 * I + 3, 6 * J + 3) = c.mass * block_of(f.mass) +
-                                                  c.damping * block_of(f.damping) +
-                                                  c.stiffness * block_of(f.stiffness);
-        }
-    }
+  void check_units() const {
+    const Eigen::VectorXd& units = options.increment_units;
+    if (units.size() == 0) return;
+    if (units.size() != assembly.dof_count() || !(units.array() > 0.0).all() || !units.allFinite())
+      throw Error("increment_units has " + std::to_string(units.size()) + " entries for " +
+                      std::to_string(assembly.dof_count()) + " dofs, or a non-positive entry",
+                  "solvers::GeneralizedAlpha", "give one positive unit per dof, or none");
   }
 
-  /// Fills constraint_work[ci] and, when given, the constraint's square block
-  /// [c_K K_λ(λ) T, Bᵀ; B T, 0] over (its node dofs, its multipliers).
-  void compute_constraint_block(int ci, double time, const MatrixCoefficients& c, Eigen::MatrixXd* K) {
-    const joints::Constraint& constraint = *constraints[ci];
-    ConstraintWork& w = constraint_work[ci];
-    const int m = constraint.equation_count();
-    const int n = dofs_per_node * static_cast<int>(w.nodes.size());
-    const core::Configuration& q = model.state();
-    w.value.resize(m);
-    w.jacobian.resize(m, n);
-    constraint.value(q, time, w.value);
-    constraint.jacobian(q, time, w.jacobian);
-    if (!K) return;
-    K->setZero(n + m, n + m);
-    if (c.stiffness != 0.0) {
-      constraint.multiplier_tangent(q, time, lambda.segment(w.first_multiplier, m), K->topLeftCorner(n, n));
-      K->topLeftCorner(n, n) *= c.stiffness;
-    }
-    K->topRightCorner(n, m) = w.jacobian.transpose();
-    K->bottomLeftCorner(m, n) = w.jacobian;
-    // Brüls et al.: the columns of the unknowns carry T(h Δq): (c_K K_λ) T and B T.
-    apply_increment_tangent(w.nodes, increment, K->leftCols(n));
+  core::ElementInput input(double time) const {
+    core::ElementInput in;
+    in.q = &model.state();
+    in.velocity = &velocity;
+    in.acceleration = &acceleration;
+    in.time = time;
+    in.load_factor = 1.0;
+    in.gravity = model.gravity();
+    return in;
   }
 
-  /// Evaluates the scaled residual [r/β′ ; Φ] at the current state (and assembles the iteration
-  /// matrix when `c` is given); `residual_scale` divides the dynamic rows.
+  /// Scaled residual [r/β′ ; Φ] at the current state (the iteration matrix too when `c` is given).
   void evaluate(double time, const MatrixCoefficients* c, double residual_scale) {
     ++counters.residual_evaluations;
-    const int model_count = static_cast<int>(model_blocks.size());
-    const int total = model_count + static_cast<int>(constraints.size());
-    if (c) {
-      pattern->assemble(
-          [&](int id, Eigen::MatrixXd& K) {
-            if (id < model_count)
-              compute_model_block(id, time, *c, &K);
-            else
-              compute_constraint_block(id - model_count, time, *c, &K);
-          },
-          options.assembly);
-    } else {
-      const MatrixCoefficients none;
-#pragma omp parallel for schedule(dynamic) if (options.assembly == core::AssemblyExecution::parallel)
-      for (int id = 0; id < total; ++id) {
-        if (id < model_count)
-          compute_model_block(id, time, none, nullptr);
-        else
-          compute_constraint_block(id - model_count, time, none, nullptr);
-      }
-    }
-    // Gather: dynamic rows r = Σ blocks + Σ Bᵀλ − gravity, and an elementwise scale of its terms.
-    residual.setZero();
-    scale = gravity.cwiseAbs();
-    auto dynamic = residual.head(dof_count);
-    dynamic -= gravity;
-    for (const BlockWork& w : blocks)
-      for (std::size_t I = 0; I < w.nodes.size(); ++I) {
-        const auto part = w.residual.segment<dofs_per_node>(dofs_per_node * I);
-        dynamic.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += part;
-        scale.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += part.cwiseAbs();
-      }
-    for (std::size_t ci = 0; ci < constraints.size(); ++ci) {
-      ConstraintWork& w = constraint_work[ci];
-      w.force.noalias() = w.jacobian.transpose() * lambda.segment(w.first_multiplier, w.value.size());
-      for (std::size_t I = 0; I < w.nodes.size(); ++I) {
-        dynamic.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += w.force.segment<dofs_per_node>(dofs_per_node * I);
-        scale.segment<dofs_per_node>(dofs_per_node * w.nodes[I]) += w.force.segment<dofs_per_node>(dofs_per_node * I).cwiseAbs();
-      }
-      residual.segment(dof_count + w.first_multiplier, w.value.size()) = w.value;
-    }
-    for (int dof : fixed_dofs) dynamic(dof) = 0.0;
+    const bool frozen = options.iteration_matrix == IterationMatrix::frozen && initialized;
+    assembly.evaluate(input(time), lambda, c, Chart::local_increment, increment, frozen);
+    auto dynamic = assembly.residual().head(assembly.dof_count());
+    for (int dof : model.fixed_dofs()) dynamic(dof) = 0.0;
     dynamic /= residual_scale;
   }
 
   bool dynamic_residual_small(double residual_scale) const {
-    const double floor = detail::residual_round_off_floor(pattern->matrix(), model.state());
-    for (int i = 0; i < dof_count; ++i)
-      if (std::abs(residual(i)) > options.residual_tolerance * scale(i) / residual_scale + floor)
+    const double floor = detail::residual_round_off_floor(assembly.pattern().matrix(), model.state());
+    const Eigen::VectorXd& r = assembly.residual();
+    for (int i = 0; i < assembly.dof_count(); ++i)
+      if (std::abs(r(i)) > options.residual_tolerance * assembly.scale()(i) / residual_scale + floor)
         return false;
     return true;
   }
 
   double constraint_norm() const {
-    return multiplier_count ? residual.tail(multiplier_count).lpNorm<Eigen::Infinity>() : 0.0;
+    const int m = assembly.multiplier_count();
+    return m ? assembly.residual().tail(m).lpNorm<Eigen::Infinity>() : 0.0;
+  }
+
+  /// 003 §5.1's ‖[Δq, h²βΔλ]‖², with Δq measured in each entry's unit when units are given.
+  double increment_norm_squared(const Eigen::Ref<const Eigen::VectorXd>& dx, double dlambda_norm) const {
+    const double dq = options.increment_units.size() ? dx.cwiseQuotient(options.increment_units).squaredNorm()
+                                                     : dx.squaredNorm();
+    return dq + dlambda_norm * dlambda_norm;
   }
 
   /// Factorizes the assembled matrix after the Dirichlet conditions; a singular matrix is a
   /// modelling error that no smaller step repairs.
   void factorize(double time) {
-    Eigen::VectorXd unused = Eigen::VectorXd::Zero(dof_count + multiplier_count);
-    pattern->apply_dirichlet(fixed_dofs, unused);
+    Eigen::VectorXd unused = Eigen::VectorXd::Zero(assembly.size());
+    assembly.pattern().apply_dirichlet(model.fixed_dofs(), unused);
     try {
-      solver->factorize(pattern->matrix());
+      solver->factorize(assembly.pattern().matrix());
     } catch (const Error& error) {
       std::ostringstream what;
       what << "the iteration matrix is singular at t = " << time << " (step " << counters.steps + 1
            << "): " << error.what();
       throw Error(what.str(), "solvers::GeneralizedAlpha",
                   "check for a redundant constraint (e.g. two joints fixing the same freedom) or a "
-                  "freedom with neither mass nor constraint (e.g. a massless body's rotation)");
+                  "freedom with neither mass nor constraint (e.g. a beam without section inertia, "
+                  "a massless body's rotation, a coordinate that no constraint involves)");
     }
     ++counters.factorizations;
     have_factorization = true;
@@ -354,42 +192,45 @@ struct GeneralizedAlpha::Implementation {
 
   // Initial conditions ---------------------------------------------------------------------------
 
-  /// M v̇₀ + Bᵀλ₀ = −(f_gyr + f_int − f_ext − f_g), B v̇₀ = −c(q₀, v₀, 0).
+  /// M v̇₀ + Bᵀλ₀ = −(f_qv + f_int − f_ext), B v̇₀ = −c(q₀, v₀, 0).
   void initialize() {
     acceleration.setZero();
     lambda.setZero();
     const MatrixCoefficients mass_only{.mass = 1.0, .damping = 0.0, .stiffness = 0.0};
     evaluate(t, &mass_only, 1.0);
+    const int n = assembly.dof_count();
     for (std::size_t ci = 0; ci < constraints.size(); ++ci) {
-      const ConstraintWork& w = constraint_work[ci];
-      Eigen::VectorXd c(w.value.size());
+      const int m = constraints[ci]->equation_count();
+      Eigen::VectorXd c(m);
       constraints[ci]->acceleration_terms(model.state(), velocity, t, c);
-      residual.segment(dof_count + w.first_multiplier, w.value.size()) = c;
+      assembly.residual().segment(n + assembly.first_multiplier(static_cast<int>(ci)), m) = c;
     }
-    solution = -residual;
-    pattern->apply_dirichlet(fixed_dofs, solution);
+    solution = -assembly.residual();
+    assembly.pattern().apply_dirichlet(model.fixed_dofs(), solution);
     factorize(t);
     have_factorization = false;  // this matrix is not an iteration matrix
     solver->solve(solution);
-    acceleration = solution.head(dof_count);
+    acceleration = solution.head(n);
     algorithmic_acceleration = acceleration;
-    lambda = solution.tail(multiplier_count);
-    if (options.iteration_matrix == IterationMatrix::frozen) freeze();
+    lambda = solution.tail(assembly.multiplier_count());
+    if (!solution.allFinite())
+      throw Error("the initial accelerations are not finite", "solvers::GeneralizedAlpha::initialize",
+                  "check the model's masses, loads and initial velocities for NaN or infinite values");
+    if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
+    // The balance starts here: energies and powers at t = 0 with the consistent accelerations.
+    evaluate(t, nullptr, 1.0);
+    initial_energy = mechanical_energy();
+    last_power = power();
     initialized = true;
   }
 
-  /// Stores every model block's mass, gyroscopic and stiffness matrices at t = 0.
-  void freeze() {
-    std::vector<FrozenBlock> initial(model_blocks.size());
-    for (std::size_t id = 0; id < model_blocks.size(); ++id) {
-      Eigen::MatrixXd K;
-      compute_model_block(static_cast<int>(id), t, {.mass = 0.0, .damping = 0.0, .stiffness = 1.0}, &K);
-      initial[id].stiffness = K;
-      initial[id].mass = blocks[id].inertia.mass;
-      initial[id].damping = blocks[id].inertia.gyroscopic_tangent;
-    }
-    frozen = std::move(initial);
+  double mechanical_energy() const {
+    const detail::SummedEnergies e = assembly.energies();
+    return e.kinetic + e.strain + e.gravity;
   }
+
+  /// Power of the external loads and of the constraint forces at the last evaluation.
+  double power() const { return assembly.energies().external_power + assembly.constraint_power(velocity); }
 
   // One step -------------------------------------------------------------------------------------
 
@@ -401,6 +242,15 @@ struct GeneralizedAlpha::Implementation {
   enum class Predictor { extrapolated, velocity_only };
   Predictor predictor = Predictor::extrapolated;
 
+  /// A frame turned by π or more within one step has left the chart: exp(hΔφ) cannot tell hΔφ from
+  /// hΔφ + 2πk (docs/model.md eq. M2). Such an iterate is refused, and the step cut back.
+  bool inside_chart() {
+    if (model.state().largest_rotation(increment) < std::numbers::pi) return true;
+    ++counters.rejected_rotations;
+    last_failure = "a frame turned by pi or more within the step";
+    return false;
+  }
+
   /// Tries one step of size h from the current state; on failure restores it and returns false.
   bool try_step(double h, Predictor predictor) {
     const double t_next = t + h;
@@ -408,6 +258,7 @@ struct GeneralizedAlpha::Implementation {
     const double gamma_prime = alpha.gamma / (h * alpha.beta);
     const MatrixCoefficients coefficients{.mass = 1.0, .damping = gamma_prime / beta_prime,
                                           .stiffness = 1.0 / beta_prime};
+    const int n = assembly.dof_count();
     start = model.state();
     const Eigen::VectorXd v0 = velocity, vdot0 = acceleration, a0 = algorithmic_acceleration,
                           lambda0 = lambda;
@@ -421,53 +272,24 @@ struct GeneralizedAlpha::Implementation {
     const Eigen::VectorXd a_next = a + (1 - alpha.alpha_f) / (1 - alpha.alpha_m) * acceleration;
     velocity = v0 + h * (1 - alpha.gamma) * a0 + h * alpha.gamma * a_next;
     increment = h * v0 + h * h * (0.5 - alpha.beta) * a0 + h * h * alpha.beta * a_next;
-    for (int dof : fixed_dofs) velocity(dof) = increment(dof) = acceleration(dof) = 0.0;
-    move_to_increment();
+    for (int dof : model.fixed_dofs()) velocity(dof) = increment(dof) = acceleration(dof) = 0.0;
 
-    double previous_norm = INFINITY, increment_norm_squared = INFINITY;
-    for (int iteration = 0;; ++iteration) {
-      // Once the increment is below the tolerance the next evaluation is most likely the last:
-      // it computes the residual only, and the matrix follows if the residual check fails.
-      const bool expect_convergence = increment_norm_squared <= options.tolerance;
-      bool need_matrix = options.iteration_matrix != IterationMatrix::modified ||
-                         !have_factorization || refactor_requested;
-      evaluate(t_next, need_matrix && !expect_convergence ? &coefficients : nullptr, beta_prime);
-      if (!residual.allFinite()) break;
-      if (iteration > 0 && increment_norm_squared <= options.tolerance &&
-          constraint_norm() <= options.constraint_tolerance && dynamic_residual_small(beta_prime)) {
-        algorithmic_acceleration = a + (1 - alpha.alpha_f) / (1 - alpha.alpha_m) * acceleration;
-        t = t_next;
-        last_iterations = iteration;
-        return true;
+    bool converged = false;
+    if (inside_chart()) {
+      model.state().assign_increment(start, increment);
+      try {
+        converged = newton(h, t_next, beta_prime, gamma_prime, coefficients, n);
+      } catch (const EvaluationFailure&) {
+        converged = false;
       }
-      if (iteration == options.max_iterations) break;
-      if (need_matrix && expect_convergence) evaluate(t_next, &coefficients, beta_prime);
-      if (need_matrix) {
-        if (options.iteration_matrix != IterationMatrix::frozen) ++counters.jtheta_evaluations;
-        factorize(t_next);
-        factorized_step = h;
-        refactor_requested = false;
-      }
-      solution = -residual;
-      for (int dof : fixed_dofs) solution(dof) = 0.0;
-      solver->solve(solution);
-      ++counters.newton_iterations;
-      if (!solution.allFinite()) break;  // a failed iteration: the step is cut back
-      const auto dx = solution.head(dof_count);
-      const auto dlambda = solution.tail(multiplier_count);
-      increment += dx;
-      velocity += gamma_prime * dx;
-      acceleration += beta_prime * dx;
-      lambda += beta_prime * dlambda;
-      move_to_increment();
-      // 003 §5.1: D = [Δq, h²β Δλ].
-      const double dlambda_norm = h * h * alpha.beta * beta_prime * dlambda.norm();
-      increment_norm_squared = dx.squaredNorm() + dlambda_norm * dlambda_norm;
-      const double norm = std::sqrt(increment_norm_squared);
-      if (options.iteration_matrix == IterationMatrix::modified &&
-          norm > options.modified_newton_contraction * previous_norm)
-        refactor_requested = true;
-      previous_norm = norm;
+    }
+    if (converged) {
+      algorithmic_acceleration = a + (1 - alpha.alpha_f) / (1 - alpha.alpha_m) * acceleration;
+      const double power_next = power();
+      external_work += 0.5 * h * (last_power + power_next);
+      last_power = power_next;
+      t = t_next;
+      return true;
     }
     // Not converged: restore the step's start.
     model.state() = start;
@@ -479,12 +301,75 @@ struct GeneralizedAlpha::Implementation {
     return false;
   }
 
-  /// q = q_n ⊕ increment.
-  void move_to_increment() {
-    core::Configuration& q = model.state();
-    for (int k = 0; k < q.node_count(); ++k) {
-      q.position[k] = start.position[k] + increment.segment<3>(dofs_per_node * k);
-      q.rotation[k] = lie::right_plus(start.rotation[k], increment.segment<3>(dofs_per_node * k + 3));
+  /// An element or joint could not be evaluated at an iterate (its spar::Error is kept in
+  /// last_failure): the iteration has failed and the step is cut back.
+  struct EvaluationFailure {};
+
+  void guarded_evaluate(double time, const MatrixCoefficients* c, double residual_scale) {
+    try {
+      evaluate(time, c, residual_scale);
+    } catch (const Error& error) {
+      last_failure = error.what();
+      throw EvaluationFailure{};
+    }
+  }
+
+  /// Newton iterations of one step from the predictor; true when converged.
+  bool newton(double h, double t_next, double beta_prime, double gamma_prime,
+              const MatrixCoefficients& coefficients, int n) {
+    const int m = assembly.multiplier_count();
+    double previous_norm = INFINITY, norm_squared = INFINITY;
+    for (int iteration = 0;; ++iteration) {
+      // Once the increment is below the tolerance the next evaluation is most likely the last:
+      // it computes the residual only, and the matrix follows if the residual check fails.
+      const bool expect_convergence = norm_squared <= options.tolerance;
+      const bool need_matrix = options.iteration_matrix != IterationMatrix::modified ||
+                               !have_factorization || refactor_requested;
+      guarded_evaluate(t_next, need_matrix && !expect_convergence ? &coefficients : nullptr, beta_prime);
+      if (!assembly.residual().allFinite()) {
+        last_failure = "the residual is not finite";
+        return false;
+      }
+      if (iteration > 0 && norm_squared <= options.tolerance &&
+          constraint_norm() <= options.constraint_tolerance && dynamic_residual_small(beta_prime)) {
+        last_iterations = iteration;
+        return true;
+      }
+      if (iteration == options.max_iterations) {
+        last_failure = "Newton did not converge in max_iterations";
+        return false;
+      }
+      if (need_matrix && expect_convergence) guarded_evaluate(t_next, &coefficients, beta_prime);
+      if (need_matrix) {
+        if (options.iteration_matrix != IterationMatrix::frozen) ++counters.jtheta_evaluations;
+        factorize(t_next);
+        factorized_step = h;
+        refactor_requested = false;
+      }
+      solution = -assembly.residual();
+      for (int dof : model.fixed_dofs()) solution(dof) = 0.0;
+      solver->solve(solution);
+      ++counters.newton_iterations;
+      if (!solution.allFinite()) {  // a failed iteration: the step is cut back
+        last_failure = "the Newton increment is not finite";
+        return false;
+      }
+      const auto dx = solution.head(n);
+      const auto dlambda = solution.tail(m);
+      increment += dx;
+      velocity += gamma_prime * dx;
+      acceleration += beta_prime * dx;
+      lambda += beta_prime * dlambda;
+      if (!inside_chart()) return false;
+      model.state().assign_increment(start, increment);
+      // 003 §5.1: D = [Δq, h²β Δλ].
+      const double dlambda_norm = h * h * alpha.beta * beta_prime * dlambda.norm();
+      norm_squared = increment_norm_squared(dx, dlambda_norm);
+      const double norm = std::sqrt(norm_squared);
+      if (options.iteration_matrix == IterationMatrix::modified &&
+          norm > options.modified_newton_contraction * previous_norm)
+        refactor_requested = true;
+      previous_norm = norm;
     }
   }
 
@@ -499,7 +384,8 @@ struct GeneralizedAlpha::Implementation {
     if (depth >= options.max_cutbacks) {
       std::ostringstream what;
       what << "Newton did not converge at t = " << t + h << " (step " << counters.steps + 1
-           << ", h = " << h << ") after " << depth << " halvings of the time step";
+           << ", h = " << h << ") after " << depth << " halvings of the time step; last failure: "
+           << last_failure;
       throw Error(what.str(), "solvers::GeneralizedAlpha",
                   "reduce the time step, raise max_iterations, or check the model: a diverging "
                   "Newton often means an unrealistic load or an inconsistent initial state");
@@ -507,6 +393,57 @@ struct GeneralizedAlpha::Implementation {
     ++counters.cutbacks;
     advance(h / 2, depth + 1);
     advance(h / 2, depth + 1);
+  }
+
+  // Structure changes ----------------------------------------------------------------------------
+
+  /// After a converged step: let the constraints switch at their events, and rebuild when they or
+  /// the model changed the structure.
+  void handle_events() {
+    bool changed = model.structure_version() != structure_version;
+    for (auto& constraint : constraints) {
+      std::string description;
+      if (constraint->update_structure(model.state(), velocity, t, description)) {
+        changed = true;
+        events.emplace_back(t, description);
+      }
+    }
+    if (changed) rebuild(nullptr);
+  }
+
+  /// Rebuilds the pattern and the symbolic factorization; carries v, v̇, a through P (if the dof
+  /// layout changed) and the multipliers of constraints whose equation count is unchanged.
+  void rebuild(const Eigen::MatrixXd* P) {
+    std::vector<int> old_first, old_count;
+    for (std::size_t ci = 0; ci < constraints.size(); ++ci) {
+      old_first.push_back(assembly.first_multiplier(static_cast<int>(ci)));
+      old_count.push_back(ci + 1 < constraints.size()
+                              ? assembly.first_multiplier(static_cast<int>(ci + 1)) - old_first.back()
+                              : assembly.multiplier_count() - old_first.back());
+    }
+    const Eigen::VectorXd old_lambda = lambda;
+    assembly.rebuild();
+    solver->analyze(assembly.pattern().matrix());
+    ++counters.pattern_builds;
+    structure_version = model.structure_version();
+    have_factorization = false;
+    if (P) {
+      velocity = *P * velocity;
+      acceleration = *P * acceleration;
+      algorithmic_acceleration = *P * algorithmic_acceleration;
+    }
+    lambda = Eigen::VectorXd::Zero(assembly.multiplier_count());
+    for (std::size_t ci = 0; ci < constraints.size(); ++ci)
+      if (constraints[ci]->equation_count() == old_count[ci])
+        lambda.segment(assembly.first_multiplier(static_cast<int>(ci)), old_count[ci]) =
+            old_lambda.segment(old_first[ci], old_count[ci]);
+    increment = Eigen::VectorXd::Zero(assembly.dof_count());
+    solution = Eigen::VectorXd::Zero(assembly.size());
+    if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
+    // The balance carries on across the change: a jump of the energy at the event shows in the
+    // numerical dissipation, where a user sees it.
+    evaluate(t, nullptr, 1.0);
+    last_power = power();
   }
 };
 
@@ -516,15 +453,40 @@ GeneralizedAlpha::GeneralizedAlpha(core::Model& model, ConstraintList constraint
 
 GeneralizedAlpha::~GeneralizedAlpha() = default;
 
-void GeneralizedAlpha::set_velocity(int node, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular) {
-  if (node < 0 || node >= impl_->model.node_count())
-    throw Error("node " + std::to_string(node) + " does not exist", "solvers::GeneralizedAlpha::set_velocity",
-                "give a node of the model");
-  if (impl_->initialized)
-    throw Error("initial velocities must be set before the first step", "solvers::GeneralizedAlpha::set_velocity",
+namespace {
+
+void check_velocity_block(const core::Model& model, int block, bool initialized, const char* where) {
+  if (block < 0 || block >= model.block_count())
+    throw Error("block " + std::to_string(block) + " does not exist", where, "give a block of the model");
+  if (initialized)
+    throw Error("initial velocities must be set before the first step", where,
                 "call set_velocity before initialize() and step()");
-  impl_->velocity.segment<3>(dofs_per_node * node) = linear;
-  impl_->velocity.segment<3>(dofs_per_node * node + 3) = angular;
+}
+
+}  // namespace
+
+void GeneralizedAlpha::set_velocity(int node, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular) {
+  const char* where = "solvers::GeneralizedAlpha::set_velocity";
+  check_velocity_block(impl_->model, node, impl_->initialized, where);
+  if (!impl_->model.state().is_frame(node))
+    throw Error("block " + std::to_string(node) + " is a vector block", where,
+                "give a vector block's velocity as one Eigen::VectorXd");
+  if (!linear.allFinite() || !angular.allFinite())
+    throw Error("the velocity has a NaN or infinite entry", where, "give finite velocities");
+  const int offset = impl_->model.state().blocks[node].offset;
+  impl_->velocity.segment<3>(offset) = linear;
+  impl_->velocity.segment<3>(offset + 3) = angular;
+}
+
+void GeneralizedAlpha::set_velocity(int block, const Eigen::VectorXd& velocity) {
+  const char* where = "solvers::GeneralizedAlpha::set_velocity";
+  check_velocity_block(impl_->model, block, impl_->initialized, where);
+  const core::Block& b = impl_->model.state().blocks[block];
+  if (velocity.size() != b.size || !velocity.allFinite())
+    throw Error("block " + std::to_string(block) + " takes " + std::to_string(b.size) +
+                    " finite velocity entries, got " + std::to_string(velocity.size()),
+                where, "give one finite entry per increment of the block (frames: xdot, Omega)");
+  impl_->velocity.segment(b.offset, b.size) = velocity;
 }
 
 void GeneralizedAlpha::initialize() {
@@ -537,7 +499,23 @@ void GeneralizedAlpha::step() {
   if (!impl_->initialized) initialize();
   const auto start = std::chrono::steady_clock::now();
   impl_->advance(impl_->options.time_step, 0);
+  impl_->handle_events();
   impl_->counters.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void GeneralizedAlpha::remap(const Eigen::MatrixXd& P) {
+  const int new_dofs = impl_->model.dof_count();
+  if (P.rows() != new_dofs || P.cols() != impl_->assembly.dof_count() || !P.allFinite())
+    throw Error("the map is " + std::to_string(P.rows()) + "x" + std::to_string(P.cols()) +
+                    ", expected " + std::to_string(new_dofs) + "x" +
+                    std::to_string(impl_->assembly.dof_count()) + " with finite entries",
+                "solvers::GeneralizedAlpha::remap",
+                "give P as (new dofs) x (old dofs), after Model::replace_state");
+  impl_->rebuild(&P);
+}
+
+const std::vector<std::pair<double, std::string>>& GeneralizedAlpha::events() const {
+  return impl_->events;
 }
 
 double GeneralizedAlpha::time() const { return impl_->t; }
@@ -546,7 +524,7 @@ const Eigen::VectorXd& GeneralizedAlpha::velocity() const { return impl_->veloci
 const Eigen::VectorXd& GeneralizedAlpha::acceleration() const { return impl_->acceleration; }
 const Eigen::VectorXd& GeneralizedAlpha::multipliers() const { return impl_->lambda; }
 const DynamicCounters& GeneralizedAlpha::counters() const { return impl_->counters; }
-int GeneralizedAlpha::multiplier_count() const { return impl_->multiplier_count; }
+int GeneralizedAlpha::multiplier_count() const { return impl_->assembly.multiplier_count(); }
 int GeneralizedAlpha::last_step_iterations() const { return impl_->last_iterations; }
 
 double GeneralizedAlpha::constraint_residual() const {
@@ -560,25 +538,13 @@ double GeneralizedAlpha::constraint_residual() const {
 }
 
 Energies GeneralizedAlpha::energies() const {
-  Energies e;
-  const core::Model& model = impl_->model;
-  const core::Configuration& q = model.state();
-  for (const core::ModelBlock& block : impl_->model_blocks) {
-    core::InertiaContribution inertia;
-    if (block.kind == core::ModelBlock::Kind::beam_element) {
-      core::beam_element_inertia(model.beam(block.index), block.element, impl_->velocity, inertia);
-      core::NodalContribution internal;
-      core::beam_element_contribution(model, block.index, block.element, q, false, internal);
-      e.strain += internal.energy;
-    } else if (block.kind == core::ModelBlock::Kind::rigid_body) {
-      core::rigid_body_inertia(model.rigid_body(block.index), impl_->velocity, inertia);
-    } else {
-      continue;
-    }
-    e.kinetic += core::kinetic_energy(inertia, impl_->velocity);
-  }
-  e.gravity = model.gravity_potential(q);
-  return e;
+  // The last evaluation of every step (and of initialize) is at the accepted state.
+  const detail::SummedEnergies e = impl_->assembly.energies();
+  Energies energies{.kinetic = e.kinetic, .strain = e.strain, .gravity = e.gravity,
+                    .external_work = impl_->external_work};
+  energies.numerical_dissipation =
+      energies.external_work - (energies.total() - impl_->initial_energy);
+  return energies;
 }
 
 }  // namespace spar::solvers

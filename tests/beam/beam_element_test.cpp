@@ -30,7 +30,7 @@ core::Configuration deform(const core::Configuration& reference, unsigned seed) 
   test::RandomRotations random(seed);
   const Eigen::Matrix3d Q = lie::exp(random.uniform(0.0, 3.0) * random.axis());
   core::Configuration q = reference;
-  for (int k = 0; k < q.node_count(); ++k) {
+  for (int k = 0; k < q.block_count(); ++k) {
     q.position[k] = Q * reference.position[k] +
                     0.2 * Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1),
                                           random.uniform(-1, 1));
@@ -177,7 +177,7 @@ TEST_CASE("a rigid-body motion produces no strain and no internal force", "[gebt
   const Eigen::Matrix3d Q = lie::exp(2.9 * random.axis());
   const Eigen::Vector3d c(0.4, -2.0, 1.5);
   core::Configuration moved = reference;
-  for (int k = 0; k < moved.node_count(); ++k) {
+  for (int k = 0; k < moved.block_count(); ++k) {
     moved.position[k] = Q * reference.position[k] + c;
     moved.rotation[k] = Q * reference.rotation[k];
   }
@@ -198,7 +198,7 @@ TEST_CASE("strains and energy are objective under a superposed rigid rotation", 
   test::RandomRotations random(10);
   const Eigen::Matrix3d Q = lie::exp(2.5 * random.axis());
   core::Configuration rotated = q;
-  for (int k = 0; k < q.node_count(); ++k) {
+  for (int k = 0; k < q.block_count(); ++k) {
     rotated.position[k] = Q * q.position[k] + Eigen::Vector3d(1.0, 2.0, 3.0);
     rotated.rotation[k] = Q * q.rotation[k];
   }
@@ -231,7 +231,7 @@ TEST_CASE("a curved beam of NURBS arcs is stress-free in its reference and under
   test::RandomRotations random(12);
   const Eigen::Matrix3d Q = lie::exp(2.0 * random.axis());
   core::Configuration moved = reference;
-  for (int k = 0; k < moved.node_count(); ++k) {
+  for (int k = 0; k < moved.block_count(); ++k) {
     moved.position[k] = Q * reference.position[k] + Eigen::Vector3d(-1.0, 0.5, 2.0);
     moved.rotation[k] = Q * reference.rotation[k];
   }

@@ -36,7 +36,7 @@ TEST_CASE("a free beam conserves energy with rho_infinity = 1", "[dynamics][vali
                                        {.time_step = 2.5e-4, .spectral_radius = 1.0, .tolerance = 1e-18,
                                         .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8});
   // Spin about Z through the middle plus a transverse velocity on one end: rotation and bending.
-  for (int k = 0; k < model.node_count(); ++k) {
+  for (int k = 0; k < model.block_count(); ++k) {
     const double x = model.state().position[k].x() - 0.5;
     integrator.set_velocity(k, Eigen::Vector3d(0.0, 3.0 * x + (k == 0 ? 1.0 : 0.0), 0.5),
                             Eigen::Vector3d(0.2, 0.0, 3.0));

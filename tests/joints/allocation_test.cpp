@@ -42,7 +42,7 @@ TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
   const long before = spar::test::allocation_count();
   for (const joints::Constraint* constraint : constraints) {
     const Eigen::Index m = constraint->equation_count();
-    const Eigen::Index n = 6 * static_cast<Eigen::Index>(constraint->nodes().size());
+    const Eigen::Index n = 6 * static_cast<Eigen::Index>(constraint->blocks().size());
     constraint->value(q, 0.3, phi.head(m));
     constraint->jacobian(q, 0.3, B.topLeftCorner(m, n));
     constraint->multiplier_tangent(q, 0.3, lambda.head(m), K.topLeftCorner(n, n));

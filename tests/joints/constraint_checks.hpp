@@ -40,7 +40,7 @@ inline core::Configuration random_configuration(int count, RandomRotations& rand
   core::Configuration q;
   for (int k = 0; k < count; ++k) {
     const Eigen::Vector3d x(random.uniform(-2, 2), random.uniform(-2, 2), random.uniform(-2, 2));
-    q.add_node(x, lie::exp(random.rotation_vector()));
+    q.add_frame(x, lie::exp(random.rotation_vector()));
   }
   return q;
 }
@@ -68,7 +68,7 @@ inline Eigen::VectorXd value(const joints::Constraint& c, const core::Configurat
 
 inline Eigen::MatrixXd jacobian(const joints::Constraint& c, const core::Configuration& q,
                                 double t) {
-  Eigen::MatrixXd B(c.equation_count(), 6 * static_cast<Eigen::Index>(c.nodes().size()));
+  Eigen::MatrixXd B(c.equation_count(), 6 * static_cast<Eigen::Index>(c.blocks().size()));
   c.jacobian(q, t, B);
   return B;
 }
@@ -77,12 +77,12 @@ inline Eigen::MatrixXd jacobian(const joints::Constraint& c, const core::Configu
 template <class F>
 Eigen::MatrixXd central_difference(const joints::Constraint& c, const core::Configuration& q,
                                    F&& f) {
-  const Eigen::Index n = 6 * static_cast<Eigen::Index>(c.nodes().size());
+  const Eigen::Index n = 6 * static_cast<Eigen::Index>(c.blocks().size());
   Eigen::MatrixXd D;
   for (Eigen::Index i = 0; i < n; ++i) {
     const Eigen::VectorXd step = fd_step * Eigen::VectorXd::Unit(n, i);
     const Eigen::VectorXd column =
-        (f(plus(q, c.nodes(), step)) - f(plus(q, c.nodes(), -step))) / (2 * fd_step);
+        (f(plus(q, c.blocks(), step)) - f(plus(q, c.blocks(), -step))) / (2 * fd_step);
     if (i == 0) D.resize(column.size(), n);
     D.col(i) = column;
   }
@@ -103,7 +103,7 @@ inline DerivativeErrors derivative_errors(const joints::Constraint& c, const cor
                                           double t, RandomRotations& random) {
   DerivativeErrors errors;
   const int m = c.equation_count();
-  const Eigen::Index n = 6 * static_cast<Eigen::Index>(c.nodes().size());
+  const Eigen::Index n = 6 * static_cast<Eigen::Index>(c.blocks().size());
 
   // B = ∂Φ(q ⊕ Δ)/∂Δ.
   const Eigen::MatrixXd B = jacobian(c, q, t);
@@ -122,7 +122,7 @@ inline DerivativeErrors derivative_errors(const joints::Constraint& c, const cor
 
   // Φ̈ = B v̇ + c along x(s) = x + v s + ½ a s², R(s) = R exp(Ω s + ½ α s²), every node moving
   // (nodes outside the joint too, so reading another node's velocity would show).
-  const int count = q.node_count();
+  const int count = q.block_count();
   const Eigen::VectorXd velocity =
       Eigen::VectorXd::NullaryExpr(6 * count, [&] { return random.uniform(-1, 1); });
   const Eigen::VectorXd acceleration =
@@ -140,9 +140,9 @@ inline DerivativeErrors derivative_errors(const joints::Constraint& c, const cor
   const double h = acceleration_step;
   const Eigen::VectorXd second_difference = (moved(h) - 2 * moved(0) + moved(-h)) / (h * h);
   Eigen::VectorXd local_acceleration(n);
-  for (std::size_t k = 0; k < c.nodes().size(); ++k)
+  for (std::size_t k = 0; k < c.blocks().size(); ++k)
     local_acceleration.segment<6>(6 * static_cast<Eigen::Index>(k)) =
-        acceleration.segment<6>(6 * c.nodes()[k]);
+        acceleration.segment<6>(6 * c.blocks()[k]);
   Eigen::VectorXd terms(m);
   c.acceleration_terms(q, velocity, t, terms);
   errors.acceleration_terms = relative_error(B * local_acceleration + terms, second_difference);

@@ -19,7 +19,7 @@ TEST_CASE("joints reject a configuration without their nodes and mis-sized outpu
   const core::Configuration smaller = test::random_configuration(2, random);
   Eigen::VectorXd phi(3);
   CHECK_THROWS_WITH(joint.value(smaller, 0, phi),
-                    Catch::Contains("has 2 nodes but the joint acts on node 2") &&
+                    Catch::Contains("has 2 blocks but the joint acts on block 2") &&
                         Catch::Contains("joints::SphericalJoint"));
   Eigen::VectorXd short_phi(2);
   CHECK_THROWS_WITH(joint.value(q0, 0, short_phi),

@@ -49,7 +49,7 @@ TEST_CASE("spherical joint leaves the rotations about the common point free",
                                 point, random.rotation_vector());
     CHECK(test::value(joint, q, 0).norm() <= 1e-14);
   }
-  CHECK(joint.nodes() == std::vector<int>{0, 1});
+  CHECK(joint.blocks() == std::vector<int>{0, 1});
 }
 
 TEST_CASE("spherical joint rejects missing nodes and two ground attachments",

@@ -60,7 +60,7 @@ struct SampleStep {
     for (int i = 0; i < 3; ++i) {
       const Eigen::Matrix3d R =
           Eigen::AngleAxisd(0.3 * k + 1.1 * i, Eigen::Vector3d(1, 2 * i - 1, 0.5 + k).normalized()).toRotationMatrix();
-      configuration.add_node(Eigen::Vector3d(k + i, 2.0 * i, -0.5 * k), R);
+      configuration.add_frame(Eigen::Vector3d(k + i, 2.0 * i, -0.5 * k), R);
     }
     velocity = Eigen::VectorXd::LinSpaced(18, 100.0 * k, 100.0 * k + 17);
     multipliers = Eigen::Vector2d(-k, 1e3 * k);

@@ -9,7 +9,7 @@ using namespace spar;
 
 TEST_CASE("a clamp on a node that does not exist is refused", "[statics][errors]") {
   auto c = test::make_cantilever(2, 2);
-  CHECK_THROWS_WITH(c.model.fix(1000), Catch::Contains("node 1000 does not exist"));
+  CHECK_THROWS_WITH(c.model.fix(1000), Catch::Contains("block 1000 does not exist"));
   CHECK_THROWS_WITH(c.model.add_load(core::NodalForce{.node = -1}), Catch::Contains("does not exist"));
 }
 

@@ -25,7 +25,7 @@ class AngleDriver final : public Constraint {
               const core::Configuration& q0);
 
   int equation_count() const override { return 1; }
-  const std::vector<int>& nodes() const override { return nodes_; }
+  const std::vector<int>& blocks() const override { return nodes_; }
 
   /// Φ = (R u)·w(t).
   void value(const core::Configuration& q, double t,

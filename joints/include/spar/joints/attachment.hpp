@@ -13,8 +13,8 @@
 
 namespace spar::joints {
 
-/// A point fixed in a node's material frame (node ≥ 0: p = x + R·offset, offset material), or a
-/// fixed inertial point of the ground (node = −1: p = offset, offset inertial).
+/// A point fixed in a frame block's material frame (node ≥ 0: p = x + R·offset, offset material),
+/// or a fixed inertial point of the ground (node = −1: p = offset, offset inertial).
 /// Write `Attachment{node}` for the node itself: `Attachment{node, {}}` value-initializes the
 /// offset with Eigen's default constructor, which leaves it uninitialized.
 struct Attachment {
@@ -29,20 +29,21 @@ struct Attachment {
 /// the node does not exist in q0.
 Attachment attach_at(int node, const Eigen::Vector3d& point, const core::Configuration& q0);
 
-/// A node as a joint sees it: its global index (−1: the ground) and the index of its six-column
-/// block in the joint's Jacobian, i.e. its position in Constraint::nodes() (−1: the ground).
+/// A frame block as a joint sees it: its global block index (−1: the ground) and the first of its
+/// six columns in the joint's Jacobian (−1: the ground).
 struct JointFrame {
   int node = -1;
-  int block = -1;
+  int column = -1;
 
   bool on_ground() const { return node < 0; }
-  /// The first of the node's three translation columns in the joint's Jacobian.
-  int translation_column() const { return core::dofs_per_node * block; }
-  /// The first of the node's three rotation columns in the joint's Jacobian.
-  int rotation_column() const { return core::dofs_per_node * block + 3; }
-  /// The node's material angular velocity Ω in the model's global velocity vector (ẋ, Ω per node).
-  Eigen::Vector3d angular_velocity(const Eigen::VectorXd& velocity) const {
-    return velocity.segment<3>(core::dofs_per_node * node + 3);
+  /// The first of the frame's three translation columns in the joint's Jacobian.
+  int translation_column() const { return column; }
+  /// The first of the frame's three rotation columns in the joint's Jacobian.
+  int rotation_column() const { return column + 3; }
+  /// The frame's material angular velocity Ω in the model's global velocity vector.
+  Eigen::Vector3d angular_velocity(const core::Configuration& q,
+                                   const Eigen::VectorXd& velocity) const {
+    return velocity.segment<3>(q.blocks[node].offset + 3);
   }
 };
 
@@ -53,7 +54,8 @@ struct JointFrames {
   std::vector<int> nodes;
 };
 
-/// Checks that `node` is −1 (ground) or a node of q0; raises spar::Error naming `where` otherwise.
+/// Checks that `node` is −1 (ground) or a frame block of q0; raises spar::Error naming `where`
+/// otherwise.
 void check_node(int node, const core::Configuration& q0, std::string_view where);
 
 /// The frames of a joint between attachments a and b, after checking that both nodes exist in

@@ -21,7 +21,7 @@ class ClampJoint final : public Constraint {
   ClampJoint(const Attachment& a, const Attachment& b, const core::Configuration& q0);
 
   int equation_count() const override { return 6; }
-  const std::vector<int>& nodes() const override { return nodes_; }
+  const std::vector<int>& blocks() const override { return nodes_; }
 
   /// Φ = (p_a − p_b, (R_a e₂ᵃ)·(R_b e₃ᵇ), (R_a e₃ᵃ)·(R_b e₁ᵇ), (R_a e₁ᵃ)·(R_b e₂ᵇ)).
   void value(const core::Configuration& q, double t,

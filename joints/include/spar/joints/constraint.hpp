@@ -1,17 +1,20 @@
 #pragma once
 /// \file
-/// The constraint interface: holonomic constraints Φ(q, t) = 0 between nodes of a model (and the
-/// ground), imposed with Lagrange multipliers (003 eq. 48). Every joint is one class implementing
-/// it; the solvers see only this interface.
+/// The constraint interface: holonomic constraints Φ(q, t) = 0 between blocks of a model (and the
+/// ground), imposed with Lagrange multipliers (003 eq. 48; docs/model.md, "Constraints"). Every
+/// joint is one class implementing it; the solvers see only this interface.
 ///
-/// Derivatives are taken in the local increments of core/configuration.hpp: for each node of the
-/// constraint, six entries (Δx inertial, Δφ material) with R ← R exp(Δφ). Velocities are given the
-/// same way: per node (ẋ inertial, Ω material), in the global dof order of the model.
+/// Derivatives are taken in the local increments of core/configuration.hpp: the Jacobian's
+/// columns are the increments of blocks(), block after block (six for a frame: Δx inertial, Δφ
+/// material with R ← R exp(Δφ); n for a vector block). Velocities are the model's global
+/// tangent-layout vector. A joint may own a coordinate of its own (a sliding joint's ζ): it is a
+/// vector block of the model like any other, listed in blocks().
 
 #include <spar/core/configuration.hpp>
 
 #include <Eigen/Core>
 
+#include <string>
 #include <vector>
 
 namespace spar::joints {
@@ -20,25 +23,25 @@ class Constraint {
 public:
   virtual ~Constraint() = default;
 
-  /// Number of scalar equations m.
+  /// Number of scalar equations m (may change at an event, see update_structure).
   virtual int equation_count() const = 0;
-  /// The nodes the constraint involves (global indices), in the order of the Jacobian's column
-  /// blocks (six columns per node). The ground is not a node.
-  virtual const std::vector<int>& nodes() const = 0;
+  /// The blocks the constraint involves (global indices), in the order of the Jacobian's column
+  /// groups. The ground is not a block.
+  virtual const std::vector<int>& blocks() const = 0;
 
   /// Φ(q, t), m entries.
   virtual void value(const core::Configuration& q, double t,
                      Eigen::Ref<Eigen::VectorXd> phi) const = 0;
-  /// B = ∂Φ(q ⊕ Δ, t)/∂Δ at Δ = 0: m × 6k for the k nodes of nodes().
+  /// B = ∂Φ(q ⊕ Δ, t)/∂Δ at Δ = 0: m × n for the n increments of blocks().
   virtual void jacobian(const core::Configuration& q, double t,
                         Eigen::Ref<Eigen::MatrixXd> B) const = 0;
-  /// ∂(B(q ⊕ Δ, t)ᵀ λ)/∂Δ at Δ = 0: 6k × 6k, the constraint's part of the iteration matrix.
+  /// ∂(B(q ⊕ Δ, t)ᵀ λ)/∂Δ at Δ = 0: n × n, the constraint's part of the iteration matrix.
   virtual void multiplier_tangent(const core::Configuration& q, double t,
                                   const Eigen::Ref<const Eigen::VectorXd>& lambda,
                                   Eigen::Ref<Eigen::MatrixXd> K) const = 0;
   /// The terms c(q, v, t) of Φ̈ = B v̇ + c: everything in the second time derivative of Φ along a
   /// motion that is not proportional to the accelerations (velocity products, Φ_tt, 2 Φ_qt v).
-  /// `velocity` is the model's global velocity vector (6 per node). m entries.
+  /// `velocity` is the model's global velocity vector. m entries.
   virtual void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity,
                                   double t, Eigen::Ref<Eigen::VectorXd> c) const = 0;
   /// ∂Φ/∂t at fixed q (non-zero for drivers only); the initial velocities must satisfy
@@ -48,6 +51,18 @@ public:
     (void)q;
     (void)t;
     phi_t.setZero();
+  }
+  /// Called by the integrator after every converged step: a constraint with events (an end stop
+  /// that locks a slider, a joint released when a mass leaves a beam) switches its equations here
+  /// and returns true when equation_count() or blocks() changed, so the integrator rebuilds its
+  /// sparse pattern. `description` then says what happened (for the results file and the log).
+  virtual bool update_structure(const core::Configuration& q, const Eigen::VectorXd& velocity,
+                                double t, std::string& description) {
+    (void)q;
+    (void)velocity;
+    (void)t;
+    (void)description;
+    return false;
   }
 };
 

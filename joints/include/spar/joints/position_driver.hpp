@@ -22,7 +22,7 @@ class PositionDriver final : public Constraint {
                  const core::Configuration& q0);
 
   int equation_count() const override { return 1; }
-  const std::vector<int>& nodes() const override { return nodes_; }
+  const std::vector<int>& blocks() const override { return nodes_; }
 
   /// Φ = n·(p_a − p_a(q0)) − f(t).
   void value(const core::Configuration& q, double t,

@@ -25,7 +25,7 @@ class PrismaticJoint final : public Constraint {
                  const core::Configuration& q0);
 
   int equation_count() const override { return rotation_lock_ ? 5 : 2; }
-  const std::vector<int>& nodes() const override { return nodes_; }
+  const std::vector<int>& blocks() const override { return nodes_; }
 
   /// Φ = ((p_a − c)·n₁, (p_a − c)·n₂[, rotation lock]).
   void value(const core::Configuration& q, double t,

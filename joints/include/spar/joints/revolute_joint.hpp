@@ -25,7 +25,7 @@ class RevoluteJoint final : public Constraint {
                 const core::Configuration& q0);
 
   int equation_count() const override { return 5; }
-  const std::vector<int>& nodes() const override { return nodes_; }
+  const std::vector<int>& blocks() const override { return nodes_; }
 
   /// Φ = (p_a − p_b, d_a·d_b1, d_a·d_b2).
   void value(const core::Configuration& q, double t,

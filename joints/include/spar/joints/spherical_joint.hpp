@@ -20,7 +20,7 @@ class SphericalJoint final : public Constraint {
   SphericalJoint(const Attachment& a, const Attachment& b, const core::Configuration& q0);
 
   int equation_count() const override { return 3; }
-  const std::vector<int>& nodes() const override { return nodes_; }
+  const std::vector<int>& blocks() const override { return nodes_; }
 
   /// Φ = p_a − p_b.
   void value(const core::Configuration& q, double t,

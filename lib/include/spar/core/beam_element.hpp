@@ -20,7 +20,7 @@
 
 namespace spar::core {
 
-inline constexpr int max_beam_element_dofs = dofs_per_node * max_beam_element_nodes;
+inline constexpr int max_beam_element_dofs = frame_dofs * max_beam_element_nodes;
 
 using ElementVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor,
                                     max_beam_element_dofs, 1>;

@@ -9,6 +9,10 @@
 #include <spar/core/converged_chart.hpp>
 #include <spar/core/cross_section.hpp>
 #include <spar/core/distributed_moment.hpp>
+#include <spar/core/element.hpp>
+#include <spar/core/elements/geometrically_exact_beam_element.hpp>
+#include <spar/core/elements/load_elements.hpp>
+#include <spar/core/elements/rigid_body_element.hpp>
 #include <spar/core/hdf5_file.hpp>
 #include <spar/core/inertia.hpp>
 #include <spar/core/loads.hpp>

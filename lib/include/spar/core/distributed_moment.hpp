@@ -13,17 +13,17 @@
 #include <spar/core/beam.hpp>
 #include <spar/core/configuration.hpp>
 #include <spar/core/loads.hpp>
-#include <spar/core/model.hpp>
 
 #include <Eigen/Core>
 
 namespace spar::core {
 
-/// The external generalized force of `moment_per_length` (already scaled by its load factor) on
-/// element e, and if `with_tangent` its derivative along q ⊕ Δ.
+/// The external generalized force `force` (6 per control point of the element) of
+/// `moment_per_length` (already scaled by its load factor) on element e, and if `tangent` is given
+/// its derivative along q ⊕ Δ.
 void distributed_moment_contribution(const GeometricallyExactBeam& beam, int e,
                                      const Configuration& q,
                                      const Eigen::Vector3d& moment_per_length, MomentFrame frame,
-                                     bool with_tangent, NodalContribution& out);
+                                     Eigen::VectorXd& force, Eigen::MatrixXd* tangent);
 
 }  // namespace spar::core

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Inertial forces of beam elements and rigid bodies in the local-frame formulation (003 eqs.
-/// 30–32, 47): f_ine = M v̇ + f_gyr(v), with v = (ẋ, Ω) per node (ẋ inertial, Ω material).
+/// 30–32, 47): f_ine = M v̇ + f_gyr(v), with v = (ẋ, Ω) per frame (ẋ inertial, Ω material).
 ///
 /// Beams interpolate the nodal velocities, ẋ(S) = Σ N_I ẋ_I and Ω(S) = Σ N_I Ω_I, so the kinetic
 /// energy is T = ½ Σ m_IJ (ρA ẋ_I·ẋ_J + Ω_Iᵀ ρJ Ω_J) with m_IJ = ∫ N_I N_J dS: the mass matrix is
@@ -9,40 +9,41 @@
 /// this kinetic energy, Ω_I × Σ_J m_IJ ρJ Ω_J (docs/dynamics.md eq. D2); 003 eq. 47 instead
 /// evaluates Ω × ρJΩ at the Gauss points, which does not derive from T and lets the energy of a
 /// free beam drift. Neither depends on the configuration, so inertia adds nothing to the stiffness.
+///
+/// Velocities here are local: the element's frames one after the other, six entries each.
 
 #include <spar/core/beam.hpp>
-#include <spar/core/configuration.hpp>
+#include <spar/core/beam_element.hpp>
 
 #include <Eigen/Core>
 
-#include <vector>
-
 namespace spar::core {
 
-/// A rigid body: one node at its centre of mass, mass and inertia tensor about the centre of mass
-/// in the body frame.
+/// A rigid body: one frame block at its centre of mass, mass and inertia tensor about the centre
+/// of mass in the body frame.
 struct RigidBody {
   int node = 0;
   double mass = 0.0;
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
 };
 
+/// Inertia of k frames with local velocity v (6k). Fixed capacity: no heap allocation.
 struct InertiaContribution {
-  std::vector<int> nodes;
-  Eigen::MatrixXd mass;                ///< M (6k × 6k), constant
-  Eigen::VectorXd gyroscopic;          ///< f_gyr(v) (6k)
-  Eigen::MatrixXd gyroscopic_tangent;  ///< ∂f_gyr/∂v (6k × 6k)
+  ElementMatrix mass;                ///< M (6k × 6k), constant
+  ElementVector gyroscopic;          ///< f_gyr(v) (6k)
+  ElementMatrix gyroscopic_tangent;  ///< ∂f_gyr/∂v (6k × 6k)
 };
 
-/// Inertia of element e of a beam at the model's global velocity vector (6 per node).
-void beam_element_inertia(const GeometricallyExactBeam& beam, int e, const Eigen::VectorXd& velocity,
+/// Inertia of element e of a beam at the element's local velocity v (6(p + 1) entries).
+void beam_element_inertia(const GeometricallyExactBeam& beam, int e,
+                          const Eigen::Ref<const Eigen::VectorXd>& velocity,
                           InertiaContribution& out);
 
-/// Inertia of a rigid body: M = diag(m I, J), f_gyr = (0, Ω × JΩ).
-void rigid_body_inertia(const RigidBody& body, const Eigen::VectorXd& velocity,
+/// Inertia of a rigid body at its local velocity v (6): M = diag(m I, J), f_gyr = (0, Ω × JΩ).
+void rigid_body_inertia(const RigidBody& body, const Eigen::Ref<const Eigen::VectorXd>& velocity,
                         InertiaContribution& out);
 
-/// ½ vᵀ M v of a contribution.
-double kinetic_energy(const InertiaContribution& c, const Eigen::VectorXd& velocity);
+/// ½ vᵀ M v of a contribution at its local velocity v.
+double kinetic_energy(const InertiaContribution& c, const Eigen::Ref<const Eigen::VectorXd>& velocity);
 
 }  // namespace spar::core

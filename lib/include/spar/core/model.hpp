@@ -1,18 +1,19 @@
 #pragma once
 /// \file
-/// A model: nodes (the configuration space), beams, loads and Dirichlet conditions, and the
-/// assembly of its internal and external generalized forces and their tangent.
+/// A model: the configuration (blocks), the elements acting on it, Dirichlet conditions and
+/// gravity (docs/model.md). Beams, rigid bodies and loads are built here as elements; a user's own
+/// element kind goes in through add_element. The solvers see only the blocks and the elements.
 
 #include <spar/core/beam.hpp>
-#include <spar/core/beam_element.hpp>
 #include <spar/core/configuration.hpp>
+#include <spar/core/element.hpp>
 #include <spar/core/inertia.hpp>
 #include <spar/core/loads.hpp>
-#include <spar/core/sparse_assembly.hpp>
 
 #include <Eigen/Core>
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace spar::core {
@@ -28,106 +29,97 @@ struct RigidBodyParameters {
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
 };
 
-/// One dense block of a model's iteration matrix: a beam element, a rigid body, or a load whose
-/// generalized force depends on the configuration.
-struct ModelBlock {
-  enum class Kind { beam_element, rigid_body, load };
-  Kind kind = Kind::beam_element;
-  int index = 0;    ///< beam, rigid body or load index
-  int element = 0;  ///< element of the beam (beam_element, and load for distributed moments)
-};
-
 /// A factor multiplying a load in time (dynamics); an empty function means 1.
 using LoadHistory = std::function<double(double)>;
 
-/// Which of a node's six degrees of freedom a Dirichlet condition fixes.
+/// Which increments of a block a Dirichlet condition fixes (translations/rotations: frames only).
 enum class Fix { all, translations, rotations };
 
 class Model {
 public:
-  /// Adds a beam; its control points become nodes of the model. Returns the beam's index.
+  Model() = default;
+  Model(Model&&) = default;
+  Model& operator=(Model&&) = default;
+
+  // Blocks ----------------------------------------------------------------------------------------
+
+  /// Appends a frame block (x, R); returns its index. Throws spar::Error if R is not a rotation.
+  int add_frame(const Eigen::Vector3d& x, const Eigen::Matrix3d& R);
+  /// Appends a vector block with coordinates p; returns its index. Throws for non-finite p.
+  int add_vector(const Eigen::VectorXd& p);
+  /// The current configuration (what solvers update).
+  Configuration& state() { return state_; }
+  const Configuration& state() const { return state_; }
+  int block_count() const { return state_.block_count(); }
+  int dof_count() const { return state_.dof_count(); }
+
+  // Elements --------------------------------------------------------------------------------------
+
+  /// Adds an element on existing blocks; returns its index. Throws spar::Error for a null element
+  /// or a block that does not exist.
+  int add_element(std::unique_ptr<Element> element);
+  int element_count() const { return static_cast<int>(elements_.size()); }
+  const Element& element(int i) const { return *elements_[i]; }
+  /// Replaces element i (a slider crossing into the next element, a re-cut mesh) and marks the
+  /// structure changed.
+  void replace_element(int i, std::unique_ptr<Element> element);
+
+  /// Adds a beam: its control points become frame blocks, each knot span a
+  /// GeometricallyExactBeamElement. Returns the beam's index.
   int add_beam(const BeamParameters& parameters);
   int beam_count() const { return static_cast<int>(beams_.size()); }
   const GeometricallyExactBeam& beam(int b) const;
 
-  /// The reference configuration (as built) and the current one (what solvers update).
-  const Configuration& reference() const { return reference_; }
-  Configuration& state() { return state_; }
-  const Configuration& state() const { return state_; }
-  int node_count() const { return reference_.node_count(); }
-  int dof_count() const { return reference_.dof_count(); }
-
-  /// Adds a rigid body (one node at its centre of mass); returns the body's index. Throws
-  /// spar::Error for a non-positive mass or an inertia that is not symmetric positive definite.
+  /// Adds a rigid body (one frame block at its centre of mass, one RigidBodyElement); returns the
+  /// body's index. Throws spar::Error for a non-positive or non-finite mass, an inertia that is
+  /// not symmetric positive definite, or a centre of mass that is not finite.
   int add_rigid_body(const RigidBodyParameters& parameters);
   int rigid_body_count() const { return static_cast<int>(rigid_bodies_.size()); }
   const RigidBody& rigid_body(int b) const;
 
-  /// Adds an external load, scaled in dynamics by `history(t)`. Throws spar::Error for a node or
-  /// beam that does not exist.
+  /// Adds an external load as elements (a distributed load: one per beam element), scaled in
+  /// statics by the load factor and in dynamics by `history(t)`. Throws spar::Error for a node or
+  /// beam that does not exist, a node that is not a frame, or a non-finite load.
   void add_load(const Load& load, LoadHistory history = {});
-  const std::vector<Load>& loads() const { return loads_; }
-  /// The load's factor at time t (1 without a history).
-  double load_factor(int load, double t) const;
+  int load_count() const { return load_count_; }
 
-  /// Gravity acceleration (inertial frame) acting on every beam and rigid body.
-  void set_gravity(const Eigen::Vector3d& g) { gravity_ = g; }
+  /// Gravity acceleration (inertial frame) acting on every element with mass; read by the
+  /// elements at every evaluation, so a change between steps takes effect at the next one.
+  void set_gravity(const Eigen::Vector3d& g);
   const Eigen::Vector3d& gravity() const { return gravity_; }
-  /// The generalized gravity force (constant, 6 per node): ∫ ρA N_I g dS on beam nodes, m g on
-  /// rigid bodies.
-  Eigen::VectorXd gravity_force() const;
-  /// The gravity potential −Σ f_g · x in configuration q.
-  double gravity_potential(const Configuration& q) const;
 
-  /// Fixes the increments of a node's degrees of freedom (clamp = Fix::all). Throws spar::Error
-  /// for a node that does not exist.
-  void fix(int node, Fix what = Fix::all);
+  // Dirichlet conditions ---------------------------------------------------------------------------
+
+  /// Fixes increments of a block (clamp = Fix::all). Throws spar::Error for a block that does not
+  /// exist, or translations/rotations of a vector block.
+  void fix(int block, Fix what = Fix::all);
   /// The fixed global dofs, sorted, without duplicates.
   const std::vector<int>& fixed_dofs() const { return fixed_dofs_; }
 
-  /// The dense blocks of the iteration matrix: every beam element, every rigid body, then every
-  /// load whose tangent is not zero (load_has_tangent).
-  std::vector<ModelBlock> blocks() const;
-  /// The global dofs of each block of blocks(), in the same order, for a SparsePattern.
-  std::vector<PatternBlock> pattern_blocks() const;
+  // Structure -------------------------------------------------------------------------------------
+
+  /// Increases whenever blocks or elements change; a solver rebuilds its sparse pattern and
+  /// symbolic factorization when it sees a new value.
+  long structure_version() const { return structure_version_; }
+  /// Replaces the configuration by one of another block layout (blocks split or merged) and
+  /// marks the structure changed. Elements and Dirichlet conditions must be renumbered by the
+  /// caller to the new layout (replace_element, set_fixed_dofs). Throws for non-finite values.
+  void replace_state(Configuration state);
+  /// Replaces the Dirichlet conditions by global dofs of the current layout.
+  void set_fixed_dofs(std::vector<int> dofs);
 
 private:
-  void check_node(int node, const char* where) const;
+  void check_block(int block, const char* where) const;
+  void check_frame(int block, const char* where) const;
 
-  Configuration reference_;
   Configuration state_;
-  std::vector<GeometricallyExactBeam> beams_;
+  std::vector<std::unique_ptr<GeometricallyExactBeam>> beams_;
   std::vector<RigidBody> rigid_bodies_;
-  std::vector<Load> loads_;
-  std::vector<LoadHistory> load_histories_;
+  std::vector<std::unique_ptr<Element>> elements_;
   std::vector<int> fixed_dofs_;
+  int load_count_ = 0;
   Eigen::Vector3d gravity_ = Eigen::Vector3d::Zero();
+  long structure_version_ = 0;
 };
-
-/// One contribution to the residual of a model: a generalized force on some nodes and, if asked,
-/// its derivative along q ⊕ Δ (local increments).
-struct NodalContribution {
-  std::vector<int> nodes;
-  Eigen::VectorXd force;    ///< 6 per node
-  Eigen::MatrixXd tangent;  ///< ∂force(q ⊕ Δ)/∂Δ, or empty
-  double energy = 0.0;      ///< the strain energy behind an internal force (0 for loads)
-};
-
-/// The internal force of element (b, e) and, if `with_tangent`, its local tangent
-/// H + ½ blockdiag(hat(m_I)) (core/beam_element.hpp).
-void beam_element_contribution(const Model& model, int b, int e, const Configuration& q,
-                               bool with_tangent, NodalContribution& out);
-
-/// The external force of a load at load factor λ and, if `with_tangent`, its derivative along
-/// q ⊕ Δ: zero for forces and material moments, ∂(Rᵀ M)/∂Δ = hat(Rᵀ M) for inertial moments.
-/// A distributed moment contributes element by element: `element` selects which.
-void load_contribution(const Model& model, const Load& load, const Configuration& q,
-                       double load_factor, bool with_tangent, NodalContribution& out,
-                       int element = 0);
-
-/// True for loads that need blocks of the iteration matrix (pattern_blocks()): moments, whose
-/// generalized force depends on the rotation chart even when their local tangent is zero.
-/// Distributed moments have one block per element of their beam.
-bool load_has_tangent(const Load& load);
 
 }  // namespace spar::core

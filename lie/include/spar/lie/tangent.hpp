@@ -13,6 +13,8 @@
 #include <spar/lie/exp.hpp>
 #include <spar/lie/hat.hpp>
 
+#include <Eigen/Geometry>
+
 #include <numbers>
 #include <string>
 

@@ -4,8 +4,10 @@
 /// Brüls, Cardona & Arnold 2012; 003 eq. 49), with the iteration-matrix strategies of 003 §5.1
 /// (docs/dynamics.md).
 ///
-/// Equations: M v̇ + f_gyr(v) + f_int(q) − f_ext(q, t) + Bᵀλ = 0, Φ(q, t) = 0, with q in
-/// (R³ × SO(3))ⁿ, v = (ẋ, Ω) per node and B the constraint Jacobian in local increments.
+/// Equations: M(q) v̇ + f_qv(q, v) + f_int(q, v) − f_ext(q, t) + Bᵀλ = 0, Φ(q, t) = 0, with q a
+/// product of frame blocks (R³ × SO(3)) and vector blocks (Rⁿ), v in the blocks' tangent layout
+/// and B the constraint Jacobian in local increments (docs/model.md). The integrator sees only the
+/// model's blocks and elements and the constraints: a new element or joint needs no change here.
 
 #include <spar/core/model.hpp>
 #include <spar/core/sparse_assembly.hpp>
@@ -15,7 +17,9 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace spar::solvers {
@@ -44,8 +48,13 @@ struct DynamicOptions {
   double time_step = 1e-3;
   double spectral_radius = 0.9;  ///< ρ∞; 1 = no numerical dissipation
   IterationMatrix iteration_matrix = IterationMatrix::update;
-  /// 003 §5.1: converged when ‖[Δq, h²βΔλ]‖² ≤ tolerance (Δq in m and rad)…
+  /// 003 §5.1: converged when ‖[Δq, h²βΔλ]‖² ≤ tolerance — a *squared* norm, Δq in m and rad
+  /// (or each block's own unit when `increment_units` is set)…
   double tolerance = 1e-6;
+  /// Optional unit of each increment entry (global tangent layout, dof_count entries): the
+  /// convergence test divides Δq by it, so metres, radians, slopes and curve parameters are
+  /// measured alike in mixed models. Empty: every entry's unit is 1 (003's test).
+  Eigen::VectorXd increment_units;
   /// …and the constraints hold, ‖Φ‖∞ ≤ constraint_tolerance…
   double constraint_tolerance = 1e-10;
   /// …and the dynamic residual is small: ‖r‖∞ ≤ residual_tolerance · (size of its terms).
@@ -65,13 +74,21 @@ struct DynamicCounters {
   long factorizations = 0;        ///< numeric factorizations
   long residual_evaluations = 0;
   long cutbacks = 0;
+  long rejected_rotations = 0;     ///< Newton iterates refused because a frame turned by ≥ π in a step
+  long pattern_builds = 1;         ///< sparse patterns built (1 + structure changes)
   double wall_seconds = 0.0;
 };
 
+/// The energy balance of a run (docs/dynamics.md eq. D8), in joules.
 struct Energies {
   double kinetic = 0.0;
   double strain = 0.0;
-  double gravity = 0.0;  ///< gravity potential
+  double gravity = 0.0;         ///< gravity potential
+  /// Work done since t = 0 by external loads (f_ext · v) and by the constraint forces (−λᵀ B v,
+  /// non-zero for drivers), trapezoidal in time.
+  double external_work = 0.0;
+  /// What the integrator dissipated since t = 0: external_work − (total() − total at t = 0).
+  double numerical_dissipation = 0.0;
   double total() const { return kinetic + strain + gravity; }
 };
 
@@ -86,8 +103,10 @@ public:
   GeneralizedAlpha(const GeneralizedAlpha&) = delete;
   GeneralizedAlpha& operator=(const GeneralizedAlpha&) = delete;
 
-  /// Sets a node's initial velocity (before the first step): ẋ inertial, Ω material.
+  /// Sets a frame block's initial velocity (before the first step): ẋ inertial, Ω material.
   void set_velocity(int node, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular);
+  /// Sets any block's initial velocity (before the first step), in the block's tangent layout.
+  void set_velocity(int block, const Eigen::VectorXd& velocity);
   /// Computes consistent initial accelerations and multipliers from M v̇ + Bᵀλ = −f and
   /// B v̇ = −c. Done by the first step() if not called.
   void initialize();
@@ -108,7 +127,19 @@ public:
   int last_step_iterations() const;
   /// ‖Φ(q, t)‖∞ now.
   double constraint_residual() const;
+  /// The energies at the current state and the balance since t = 0.
   Energies energies() const;
+
+  /// Structure changes (docs/model.md, "Structure changes"). The integrator rebuilds its sparse
+  /// pattern and symbolic factorization by itself after a step in which a constraint's
+  /// update_structure() reported a change or the model's structure_version() moved. When blocks
+  /// were split or merged (Model::replace_state), call remap with the linear map P (new dofs ×
+  /// old dofs) that carries velocities, accelerations and the algorithmic acceleration across:
+  /// v ← P v, v̇ ← P v̇, a ← P a. Multipliers of constraints whose equation count is unchanged are
+  /// kept; the others start from zero (an index-3 multiplier has no history in the method).
+  void remap(const Eigen::MatrixXd& P);
+  /// The events of the run so far (time and what the constraint said), in order.
+  const std::vector<std::pair<double, std::string>>& events() const;
 
 private:
   struct Implementation;

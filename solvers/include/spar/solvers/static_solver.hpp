@@ -8,6 +8,7 @@
 #include <spar/core/model.hpp>
 #include <spar/core/sparse_assembly.hpp>
 #include <spar/error.hpp>
+#include <spar/joints/constraint.hpp>
 #include <spar/solvers/linear_solver.hpp>
 
 #include <vector>
@@ -19,6 +20,7 @@ struct StaticOptions {
   int max_iterations = 25;            ///< Newton iterations per step before a cut-back
   double residual_tolerance = 1e-9;   ///< ‖r‖∞ ≤ tol · max(‖f_int‖∞, ‖λ f_ext‖∞) on free dofs
   double increment_tolerance = 1e-10; ///< ‖Δ‖∞ of the last Newton increment (m and rad)
+  double constraint_tolerance = 1e-10; ///< ‖Φ‖∞ at convergence (constraints only)
   int max_cutbacks = 10;              ///< halvings of a load increment before giving up
   LinearSolverKind linear_solver = LinearSolverKind::klu;
   core::AssemblyExecution assembly = core::AssemblyExecution::serial;
@@ -33,7 +35,9 @@ struct StaticStep {
 };
 
 struct StaticReport {
-  std::vector<StaticStep> steps;
+  std::vector<StaticStep> steps;  ///< one entry per converged load step
+  /// The Lagrange multipliers λ of the constraints at load factor 1 (constraint by constraint).
+  Eigen::VectorXd multipliers;
   int newton_iterations = 0;  ///< over all steps, including those of failed attempts
   int cutbacks = 0;
   int factorizations = 0;
@@ -53,8 +57,10 @@ private:
   double last_converged_load_factor_;
 };
 
-/// Brings model.state() into equilibrium with the loads at load factor 1. Returns what it did;
-/// throws ConvergenceError (model at the last converged load factor) if a step fails.
-StaticReport solve_static(core::Model& model, const StaticOptions& options = {});
+/// Brings model.state() into equilibrium with the loads and gravity, both scaled by the load
+/// factor, at load factor 1, subject to `constraints` (Φ(q, 0) = 0, with multipliers). Returns
+/// what it did; throws ConvergenceError (model at the last converged load factor) if a step fails.
+StaticReport solve_static(core::Model& model, const StaticOptions& options = {},
+                          const std::vector<joints::Constraint*>& constraints = {});
 
 }  // namespace spar::solvers

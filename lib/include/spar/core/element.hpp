@@ -1,0 +1,91 @@
+#pragma once
+/// \file
+/// The Element interface: everything the solvers know of a beam element, a rigid body, a load or
+/// gravity (docs/model.md, "Elements"). A new element kind is one class implementing it; no
+/// solver changes.
+///
+/// An element acts on a list of blocks of the configuration (core/configuration.hpp). Its local
+/// vectors and matrices are ordered block after block, each block's increments in the block's own
+/// order (6 for a frame: Δx, Δφ; n for a vector). On request it returns its part of the dynamic
+/// residual
+///     r = M(q) v̇ + f_qv(q, v) + f_int(q, v) − f_ext(q, t)                      (eq. M4)
+/// (inertia only when the evaluation is dynamic) and the derivatives the iteration matrix needs:
+///     stiffness K = ∂r(q ⊕ Δ, v, v̇)/∂Δ at Δ = 0 (local increments, eq. M5),
+///     damping   C = ∂r/∂v,
+///     mass      M = ∂r/∂v̇.
+/// A configuration-dependent mass matrix contributes ∂(M(q) v̇)/∂q to K.
+
+#include <spar/core/configuration.hpp>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace spar::core {
+
+/// What to compute (deal.II-style update flags): the hot path asks only for what it uses.
+struct ElementRequest {
+  bool residual = true;
+  bool stiffness = false;
+  bool damping = false;
+  bool mass = false;
+  bool energy = false;
+  /// The caller keeps the rotation–rotation blocks of every frame block (003's frozen iteration
+  /// matrix) and overwrites them: an element may leave them out of K, C and M to save time.
+  bool skip_rotation_blocks = false;
+};
+
+/// The state an element is evaluated in.
+struct ElementInput {
+  const Configuration* q = nullptr;
+  /// Global tangent-layout velocity and acceleration; both nullptr in statics.
+  const Eigen::VectorXd* velocity = nullptr;
+  const Eigen::VectorXd* acceleration = nullptr;
+  double time = 0.0;
+  /// The factor on every external load and on gravity: the load factor λ in statics, 1 in
+  /// dynamics (where a load's own history(t) scales it).
+  double load_factor = 1.0;
+  /// The gravity acceleration (inertial frame) of the model.
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+
+  bool dynamic() const { return velocity != nullptr; }
+};
+
+/// Energies of one element (J) and the power of its non-conservative external forces (W).
+struct ElementEnergy {
+  double kinetic = 0.0;
+  double strain = 0.0;
+  double gravity = 0.0;          ///< gravity potential −∫ ρ g · x
+  double external_power = 0.0;  ///< f_ext · v of loads that have no potential here
+};
+
+/// What an element returns; owned by the caller and reused across calls, so a kernel that resizes
+/// to the same size every time allocates nothing after the first call.
+struct ElementOutput {
+  Eigen::VectorXd residual;
+  Eigen::MatrixXd stiffness;
+  Eigen::MatrixXd damping;
+  Eigen::MatrixXd mass;
+  ElementEnergy energy;
+
+  /// Sizes and zeroes what `request` asks for, for an element with n local dofs.
+  void reset(int n, const ElementRequest& request);
+};
+
+class Element {
+public:
+  virtual ~Element() = default;
+
+  /// The blocks the element couples, in the order of its local vectors.
+  virtual const std::vector<int>& blocks() const = 0;
+  /// Fills `out` (already reset to the element's size for `request`) at `in`. May throw
+  /// spar::Error for a configuration it cannot evaluate (e.g. a beam section turned by π): the
+  /// solvers treat that as a failed iteration.
+  virtual void evaluate(const ElementInput& in, const ElementRequest& request,
+                        ElementOutput& out) const = 0;
+  /// A short name for messages ("beam 1, element 3").
+  virtual std::string name() const = 0;
+};
+
+}  // namespace spar::core

@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// One knot span of a geometrically exact beam as an Element (003 §3; docs/beam.md): the strain
+/// energy's force and exact stiffness (core/beam_element.hpp), the constant consistent mass with
+/// its gyroscopic terms (core/inertia.hpp), and gravity as the consistent nodal forces
+/// f_I = ∫ N_I ρA g dS.
+
+#include <spar/core/beam.hpp>
+#include <spar/core/element.hpp>
+
+#include <string>
+#include <vector>
+
+namespace spar::core {
+
+class GeometricallyExactBeamElement final : public Element {
+public:
+  /// Element e of `beam` (which must outlive this element); `beam_index` names it in messages.
+  GeometricallyExactBeamElement(const GeometricallyExactBeam& beam, int beam_index, int e);
+
+  const std::vector<int>& blocks() const override { return blocks_; }
+  void evaluate(const ElementInput& in, const ElementRequest& request,
+                ElementOutput& out) const override;
+  std::string name() const override;
+
+private:
+  const GeometricallyExactBeam* beam_;
+  int beam_index_;
+  int element_;
+  std::vector<int> blocks_;
+  /// ∫ N_I dS over the element (part-0 Gauss points): consistent nodal weights of a uniform load.
+  std::vector<double> shape_integrals_;
+};
+
+/// ∫ N_I dS over element e of a beam, one entry per control point of the element: the consistent
+/// nodal weights of a load per unit reference length (003 eq. 33).
+std::vector<double> beam_shape_integrals(const GeometricallyExactBeam& beam, int e);
+
+}  // namespace spar::core

@@ -1,0 +1,63 @@
+#pragma once
+/// \file
+/// External loads as Elements (003 eq. 33): a concentrated force or moment on a frame block, and
+/// a force or moment per unit length on one element of a beam. Each enters the residual as −f_ext
+/// and reports the power f_ext · v it delivers in dynamics (for the energy balance).
+///
+/// Scale: the load factor λ in statics; history(t) in dynamics (1 without a history).
+
+#include <spar/core/beam.hpp>
+#include <spar/core/element.hpp>
+#include <spar/core/loads.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace spar::core {
+
+/// The factor on a load: λ in statics, history(t) in dynamics.
+double load_scale(const ElementInput& in, const std::function<double(double)>& history);
+
+/// A NodalForce or NodalMoment on one frame block.
+class NodalLoadElement final : public Element {
+public:
+  NodalLoadElement(const Load& load, std::function<double(double)> history, int load_index);
+
+  const std::vector<int>& blocks() const override { return blocks_; }
+  void evaluate(const ElementInput& in, const ElementRequest& request,
+                ElementOutput& out) const override;
+  std::string name() const override { return "load " + std::to_string(load_index_); }
+
+private:
+  Load load_;
+  std::function<double(double)> history_;
+  int load_index_;
+  std::vector<int> blocks_;
+};
+
+/// A DistributedForce or DistributedMoment on element e of a beam (consistent nodal forces,
+/// docs/beam.md B14 for the moment).
+class DistributedLoadElement final : public Element {
+public:
+  DistributedLoadElement(const Load& load, const GeometricallyExactBeam& beam, int e,
+                         std::function<double(double)> history, int load_index);
+
+  const std::vector<int>& blocks() const override { return blocks_; }
+  void evaluate(const ElementInput& in, const ElementRequest& request,
+                ElementOutput& out) const override;
+  std::string name() const override {
+    return "load " + std::to_string(load_index_) + " on element " + std::to_string(element_);
+  }
+
+private:
+  Load load_;
+  const GeometricallyExactBeam* beam_;
+  int element_;
+  std::function<double(double)> history_;
+  int load_index_;
+  std::vector<int> blocks_;
+  std::vector<double> shape_integrals_;
+};
+
+}  // namespace spar::core

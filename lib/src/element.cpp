@@ -1,0 +1,13 @@
+#include <spar/core/element.hpp>
+
+namespace spar::core {
+
+void ElementOutput::reset(int n, const ElementRequest& request) {
+  if (request.residual) residual.setZero(n);
+  if (request.stiffness) stiffness.setZero(n, n);
+  if (request.damping) damping.setZero(n, n);
+  if (request.mass) mass.setZero(n, n);
+  energy = {};
+}
+
+}  // namespace spar::core

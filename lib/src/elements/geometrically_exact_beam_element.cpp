@@ -1,0 +1,68 @@
+#include <spar/core/elements/geometrically_exact_beam_element.hpp>
+
+#include <spar/core/beam_element.hpp>
+#include <spar/core/inertia.hpp>
+
+namespace spar::core {
+
+std::vector<double> beam_shape_integrals(const GeometricallyExactBeam& beam, int e) {
+  std::vector<double> integrals(static_cast<std::size_t>(beam.degree() + 1), 0.0);
+  for (const BeamGaussPoint& gp : beam.element(e).gauss_points) {
+    if (gp.part != 0) continue;  // the full rule (two points for p = 1)
+    for (int I = 0; I <= beam.degree(); ++I) integrals[I] += gp.weight * gp.shape[I];
+  }
+  return integrals;
+}
+
+GeometricallyExactBeamElement::GeometricallyExactBeamElement(const GeometricallyExactBeam& beam,
+                                                             int beam_index, int e)
+    : beam_(&beam), beam_index_(beam_index), element_(e), shape_integrals_(beam_shape_integrals(beam, e)) {
+  const int first = beam.node(beam.element(e).first_control_point);
+  for (int I = 0; I <= beam.degree(); ++I) blocks_.push_back(first + I);
+}
+
+std::string GeometricallyExactBeamElement::name() const {
+  return "beam " + std::to_string(beam_index_) + ", element " + std::to_string(element_);
+}
+
+void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const ElementRequest& request,
+                                             ElementOutput& out) const {
+  const Configuration& q = *in.q;
+  const int k = static_cast<int>(blocks_.size());
+  const int n = frame_dofs * k;
+
+  // Strain energy: force and the exact stiffness along q ⊕ Δ (docs/beam.md B1–B12).
+  BeamElementResult internal;
+  evaluate_beam_element(*beam_, element_, q,
+                        request.stiffness ? BeamEvaluation::force_and_stiffness : BeamEvaluation::force,
+                        internal);
+  if (request.residual) out.residual += internal.internal_force;
+  if (request.stiffness) {
+    out.stiffness += internal.stiffness;
+    add_local_tangent_correction(internal.internal_force, out.stiffness);
+  }
+  out.energy.strain = internal.strain_energy;
+
+  // Gravity: f_I = λ ρA g ∫ N_I dS, a dead load with potential −Σ f_I · x_I (x is linear in x_I).
+  const double rho_a = beam_->inertia().mass_per_length;
+  if (rho_a != 0.0 && in.gravity.squaredNorm() != 0.0)
+    for (int I = 0; I < k; ++I) {
+      const Eigen::Vector3d f = in.load_factor * rho_a * shape_integrals_[I] * in.gravity;
+      if (request.residual) out.residual.segment<3>(frame_dofs * I) -= f;
+      out.energy.gravity -= f.dot(q.position[blocks_[I]]);
+    }
+
+  // Inertia (003 eqs. 30–32): M v̇ + f_gyr(v), M constant, C = ∂f_gyr/∂v.
+  if (!in.dynamic()) return;
+  ElementVector v(n), a(n);
+  gather(q, blocks_, *in.velocity, v);
+  gather(q, blocks_, *in.acceleration, a);
+  InertiaContribution inertia;
+  beam_element_inertia(*beam_, element_, v, inertia);
+  if (request.residual) out.residual += inertia.mass * a + inertia.gyroscopic;
+  if (request.mass) out.mass += inertia.mass;
+  if (request.damping) out.damping += inertia.gyroscopic_tangent;
+  out.energy.kinetic = kinetic_energy(inertia, v);
+}
+
+}  // namespace spar::core

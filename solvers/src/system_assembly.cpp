@@ -1,0 +1,236 @@
+#include "system_assembly.hpp"
+
+#include <spar/core/converged_chart.hpp>
+#include <spar/error.hpp>
+
+#include <exception>
+#include <mutex>
+
+namespace spar::solvers::detail {
+
+namespace {
+
+/// Calls body(i) for i in [0, count), on OpenMP threads when `parallel`; the first exception
+/// thrown by any call is rethrown on the calling thread once the loop has finished, so none
+/// escapes an OpenMP region.
+template <class Body>
+void for_each_index(int count, bool parallel, const Body& body) {
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+#pragma omp parallel for schedule(dynamic) if (parallel)
+  for (int i = 0; i < count; ++i) {
+    try {
+      body(i);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+/// Calls f(row, col) with the local offsets of the rotation entries of every pair of frame blocks
+/// among `blocks`.
+template <class F>
+void for_each_rotation_pair(const core::Configuration& q, const std::vector<int>& blocks, const F& f) {
+  Eigen::Index row = 0;
+  for (const int a : blocks) {
+    if (q.is_frame(a)) {
+      Eigen::Index col = 0;
+      for (const int b : blocks) {
+        if (q.is_frame(b)) f(row + 3, col + 3);
+        col += q.blocks[b].size;
+      }
+    }
+    row += q.blocks[a].size;
+  }
+}
+
+}  // namespace
+
+SystemAssembly::SystemAssembly(core::Model& model, std::vector<joints::Constraint*> constraints,
+                               core::AssemblyExecution execution)
+    : model_(model), constraints_(std::move(constraints)), execution_(execution) {
+  for (const joints::Constraint* constraint : constraints_)
+    if (!constraint)
+      throw Error("null constraint", "solvers::SystemAssembly", "pass joint objects");
+  rebuild();
+}
+
+void SystemAssembly::rebuild() {
+  const core::Configuration& q = model_.state();
+  dof_count_ = model_.dof_count();
+  std::vector<core::PatternBlock> pattern_blocks;
+  element_work_.resize(static_cast<std::size_t>(model_.element_count()));
+  for (int id = 0; id < model_.element_count(); ++id) {
+    element_work_[id].dofs = core::block_dofs(q, model_.element(id).blocks());
+    element_work_[id].frozen_mass.resize(0, 0);
+    pattern_blocks.push_back(core::PatternBlock::element(element_work_[id].dofs));
+  }
+  multiplier_count_ = 0;
+  constraint_work_.resize(constraints_.size());
+  for (std::size_t ci = 0; ci < constraints_.size(); ++ci) {
+    ConstraintWork& w = constraint_work_[ci];
+    for (const int b : constraints_[ci]->blocks())
+      if (b < 0 || b >= model_.block_count())
+        throw Error("constraint " + std::to_string(ci) + " refers to block " + std::to_string(b) +
+                        ", which the model does not have",
+                    "solvers::SystemAssembly", "build joints on the model they constrain");
+    w.dofs = core::block_dofs(q, constraints_[ci]->blocks());
+    w.first_multiplier = multiplier_count_;
+    const int m = constraints_[ci]->equation_count();
+    multiplier_count_ += m;
+    // One square block per constraint over its dofs and its multipliers.
+    std::vector<int> dofs = w.dofs;
+    for (int i = 0; i < m; ++i) dofs.push_back(dof_count_ + w.first_multiplier + i);
+    pattern_blocks.push_back(core::PatternBlock::element(std::move(dofs)));
+  }
+  pattern_ = std::make_unique<core::SparsePattern>(size(), pattern_blocks);
+  residual_ = scale_ = Eigen::VectorXd::Zero(size());
+}
+
+void SystemAssembly::compute_element(int id, const core::ElementInput& in,
+                                     const MatrixCoefficients* c, Chart chart,
+                                     const Eigen::VectorXd& increment, bool use_frozen,
+                                     Eigen::MatrixXd* K) {
+  const core::Element& element = model_.element(id);
+  ElementWork& w = element_work_[id];
+  const bool dynamic = in.dynamic();
+  core::ElementRequest request;
+  request.stiffness = c && c->stiffness != 0.0;
+  request.mass = c && dynamic && c->mass != 0.0;
+  request.damping = c && dynamic && c->damping != 0.0;
+  request.skip_rotation_blocks = use_frozen;
+  const int n = static_cast<int>(w.dofs.size());
+  w.output.reset(n, request);
+  element.evaluate(in, request, w.output);
+  const std::vector<int>& blocks = element.blocks();
+  if (chart == Chart::converged)
+    core::pull_back_to_converged_chart(*in.q, blocks, increment, w.output.residual,
+                                       request.stiffness ? &w.output.stiffness : nullptr);
+  else if (request.stiffness)
+    core::apply_tangent_operator(*in.q, blocks, increment, w.output.stiffness);
+  if (!K) return;
+  if (request.stiffness) *K += c->stiffness * w.output.stiffness;
+  if (request.mass) *K += c->mass * w.output.mass;
+  if (request.damping) *K += c->damping * w.output.damping;
+  if (use_frozen && w.frozen_mass.size() > 0)
+    // 003 §5.1: the rotation–rotation blocks J_θ stay those of t = 0.
+    for_each_rotation_pair(*in.q, blocks, [&](Eigen::Index r, Eigen::Index s) {
+      K->block<3, 3>(r, s) = c->mass * w.frozen_mass.block<3, 3>(r, s) +
+                             c->damping * w.frozen_damping.block<3, 3>(r, s) +
+                             c->stiffness * w.frozen_stiffness.block<3, 3>(r, s);
+    });
+}
+
+void SystemAssembly::compute_constraint(int ci, const core::ElementInput& in,
+                                        const Eigen::VectorXd& lambda, const MatrixCoefficients* c,
+                                        Chart chart, const Eigen::VectorXd& increment,
+                                        Eigen::MatrixXd* K) {
+  const joints::Constraint& constraint = *constraints_[ci];
+  ConstraintWork& w = constraint_work_[ci];
+  const int m = constraint.equation_count();
+  const int n = static_cast<int>(w.dofs.size());
+  const core::Configuration& q = *in.q;
+  w.value.resize(m);
+  w.jacobian.resize(m, n);
+  constraint.value(q, in.time, w.value);
+  constraint.jacobian(q, in.time, w.jacobian);
+  const auto lambda_c = lambda.segment(w.first_multiplier, m);
+  w.force.noalias() = w.jacobian.transpose() * lambda_c;
+  const std::vector<int>& blocks = constraint.blocks();
+  const bool with_tangent = K && c->stiffness != 0.0;
+  if (with_tangent) {
+    w.multiplier_tangent.setZero(n, n);
+    constraint.multiplier_tangent(q, in.time, lambda_c, w.multiplier_tangent);
+  }
+  if (chart == Chart::converged)
+    core::pull_back_to_converged_chart(q, blocks, increment, w.force,
+                                       with_tangent ? &w.multiplier_tangent : nullptr);
+  else if (with_tangent)
+    core::apply_tangent_operator(q, blocks, increment, w.multiplier_tangent);
+  if (!K) return;
+  K->setZero(n + m, n + m);
+  if (with_tangent) K->topLeftCorner(n, n) = c->stiffness * w.multiplier_tangent;
+  // B in the unknowns: B T(increment) on frame rotation columns, in both charts; the Bᵀλ rows
+  // are pulled back in the converged chart only.
+  w.mapped_jacobian = w.jacobian;
+  core::apply_tangent_operator(q, blocks, increment, w.mapped_jacobian);
+  K->bottomLeftCorner(m, n) = w.mapped_jacobian;
+  if (chart == Chart::converged)
+    K->topRightCorner(n, m) = w.mapped_jacobian.transpose();
+  else
+    K->topRightCorner(n, m) = w.jacobian.transpose();
+}
+
+void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorXd& lambda,
+                              const MatrixCoefficients* c, Chart chart,
+                              const Eigen::VectorXd& increment, bool use_frozen) {
+  const int element_count = static_cast<int>(element_work_.size());
+  const int total = element_count + static_cast<int>(constraints_.size());
+  if (c) {
+    pattern_->assemble(
+        [&](int id, Eigen::MatrixXd& K) {
+          if (id < element_count)
+            compute_element(id, in, c, chart, increment, use_frozen, &K);
+          else
+            compute_constraint(id - element_count, in, lambda, c, chart, increment, &K);
+        },
+        execution_);
+  } else {
+    for_each_index(total, execution_ == core::AssemblyExecution::parallel, [&](int id) {
+      if (id < element_count)
+        compute_element(id, in, nullptr, chart, increment, false, nullptr);
+      else
+        compute_constraint(id - element_count, in, lambda, nullptr, chart, increment, nullptr);
+    });
+  }
+  // Gather: dynamic rows Σ r_e + Σ Bᵀλ and the size of their terms; constraint rows Φ.
+  residual_.setZero();
+  scale_.setZero();
+  for (const ElementWork& w : element_work_)
+    for (std::size_t i = 0; i < w.dofs.size(); ++i) {
+      residual_(w.dofs[i]) += w.output.residual(static_cast<Eigen::Index>(i));
+      scale_(w.dofs[i]) += std::abs(w.output.residual(static_cast<Eigen::Index>(i)));
+    }
+  for (const ConstraintWork& w : constraint_work_) {
+    for (std::size_t i = 0; i < w.dofs.size(); ++i) {
+      residual_(w.dofs[i]) += w.force(static_cast<Eigen::Index>(i));
+      scale_(w.dofs[i]) += std::abs(w.force(static_cast<Eigen::Index>(i)));
+    }
+    residual_.segment(dof_count_ + w.first_multiplier, w.value.size()) = w.value;
+  }
+}
+
+void SystemAssembly::freeze(const core::ElementInput& in) {
+  const MatrixCoefficients all{.mass = 1.0, .damping = 1.0, .stiffness = 1.0};
+  const Eigen::VectorXd no_increment = Eigen::VectorXd::Zero(dof_count_);
+  for (int id = 0; id < static_cast<int>(element_work_.size()); ++id) {
+    compute_element(id, in, &all, Chart::local_increment, no_increment, false, nullptr);
+    ElementWork& w = element_work_[id];
+    w.frozen_mass = w.output.mass;
+    w.frozen_damping = w.output.damping;
+    w.frozen_stiffness = w.output.stiffness;
+  }
+}
+
+SummedEnergies SystemAssembly::energies() const {
+  SummedEnergies sum;
+  for (const ElementWork& w : element_work_) {
+    sum.kinetic += w.output.energy.kinetic;
+    sum.strain += w.output.energy.strain;
+    sum.gravity += w.output.energy.gravity;
+    sum.external_power += w.output.energy.external_power;
+  }
+  return sum;
+}
+
+double SystemAssembly::constraint_power(const Eigen::VectorXd& velocity) const {
+  double power = 0.0;
+  for (const ConstraintWork& w : constraint_work_)
+    for (std::size_t i = 0; i < w.dofs.size(); ++i)
+      power -= w.force(static_cast<Eigen::Index>(i)) * velocity(w.dofs[i]);
+  return power;
+}
+
+}  // namespace spar::solvers::detail

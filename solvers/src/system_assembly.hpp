@@ -1,0 +1,116 @@
+#pragma once
+// Private to spar_solvers: the one place where the elements and constraints of a model are
+// evaluated and gathered into the global residual and iteration matrix, for statics and dynamics
+// alike (docs/model.md, "Assembly"). Every load, gravity and inertia reaches both solvers by this
+// path.
+
+#include <spar/core/element.hpp>
+#include <spar/core/model.hpp>
+#include <spar/core/sparse_assembly.hpp>
+#include <spar/joints/constraint.hpp>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <vector>
+
+namespace spar::solvers::detail {
+
+/// Coefficients of one assembly of the iteration matrix: c_M M + c_C C + c_K (K + K_λ) T.
+struct MatrixCoefficients {
+  double mass = 1.0, damping = 0.0, stiffness = 0.0;
+};
+
+/// How element and constraint derivatives, taken in local increments q ⊕ Δ, become derivatives in
+/// the Newton unknowns.
+enum class Chart {
+  /// Dynamics (Brüls et al. 2012): the unknown is the step's increment; K and B are
+  /// right-multiplied by T(increment) on frame rotation columns (docs/model.md eq. M3).
+  local_increment,
+  /// Statics (Cardona–Géradin): the converged chart, forces pulled back with T(φ)ᵀ and the
+  /// tangent made symmetric (core/converged_chart.hpp).
+  converged,
+};
+
+/// The model's energies summed over its elements.
+struct SummedEnergies {
+  double kinetic = 0.0, strain = 0.0, gravity = 0.0, external_power = 0.0;
+};
+
+class SystemAssembly {
+public:
+  SystemAssembly(core::Model& model, std::vector<joints::Constraint*> constraints,
+                 core::AssemblyExecution execution);
+
+  /// Re-reads the model's elements and blocks and the constraints' blocks and equation counts;
+  /// rebuilds the sparse pattern. The caller re-analyzes its linear solver.
+  void rebuild();
+
+  int dof_count() const { return dof_count_; }
+  int multiplier_count() const { return multiplier_count_; }
+  int size() const { return dof_count_ + multiplier_count_; }
+  /// The first multiplier of constraint ci.
+  int first_multiplier(int ci) const { return constraint_work_[ci].first_multiplier; }
+  core::SparsePattern& pattern() { return *pattern_; }
+  const core::SparsePattern& pattern() const { return *pattern_; }
+
+  /// Evaluates every element at `in` and every constraint at (in.q, in.time, λ) and gathers
+  ///   residual = [Σ_e r_e + Σ_c Bᵀλ ; Φ]  (size() entries, in the chart's rows),
+  ///   scale    = Σ |terms| per dynamic row (what "small" means for each row),
+  /// and, when `c` is given, assembles c_M M + c_C C + c_K (K + K_λ) and B into the pattern, mapped
+  /// to the chart's unknowns with `increment` (the step's increment or the converged chart φ).
+  /// With `use_frozen`, the rotation–rotation blocks of frames are those stored by freeze().
+  /// An element's or joint's spar::Error propagates (after every thread has finished).
+  void evaluate(const core::ElementInput& in, const Eigen::VectorXd& lambda,
+                const MatrixCoefficients* c, Chart chart, const Eigen::VectorXd& increment,
+                bool use_frozen);
+
+  /// Stores each element's rotation–rotation blocks of M, C and K at `in` (003's frozen matrix).
+  void freeze(const core::ElementInput& in);
+
+  const Eigen::VectorXd& residual() const { return residual_; }
+  Eigen::VectorXd& residual() { return residual_; }
+  const Eigen::VectorXd& scale() const { return scale_; }
+  /// The energies of the last evaluate() (each element fills them on every evaluation).
+  SummedEnergies energies() const;
+  /// The power −Σ (Bᵀλ) · v of the constraint forces of the last evaluate() at the global
+  /// velocity v (non-zero for drivers; ≈ 0 for passive joints).
+  double constraint_power(const Eigen::VectorXd& velocity) const;
+  /// The constraint's Jacobian B (m × n) of the last evaluate(), before the chart's map.
+  const std::vector<joints::Constraint*>& constraints() const { return constraints_; }
+
+private:
+  struct ElementWork {
+    std::vector<int> dofs;
+    core::ElementOutput output;
+    /// Frozen rotation–rotation entries (mass, damping, stiffness), full-size element matrices.
+    Eigen::MatrixXd frozen_mass, frozen_damping, frozen_stiffness;
+  };
+  struct ConstraintWork {
+    std::vector<int> dofs;
+    int first_multiplier = 0;
+    Eigen::VectorXd value;
+    Eigen::MatrixXd jacobian;
+    Eigen::VectorXd force;               // Bᵀλ
+    Eigen::MatrixXd multiplier_tangent;  // ∂(Bᵀλ)/∂Δ (scratch)
+    Eigen::MatrixXd mapped_jacobian;     // B T (scratch)
+  };
+
+  void compute_element(int id, const core::ElementInput& in, const MatrixCoefficients* c,
+                       Chart chart, const Eigen::VectorXd& increment, bool use_frozen,
+                       Eigen::MatrixXd* K);
+  void compute_constraint(int ci, const core::ElementInput& in, const Eigen::VectorXd& lambda,
+                          const MatrixCoefficients* c, Chart chart,
+                          const Eigen::VectorXd& increment, Eigen::MatrixXd* K);
+
+  core::Model& model_;
+  std::vector<joints::Constraint*> constraints_;
+  core::AssemblyExecution execution_;
+  int dof_count_ = 0, multiplier_count_ = 0;
+  std::vector<ElementWork> element_work_;
+  std::vector<ConstraintWork> constraint_work_;
+  std::unique_ptr<core::SparsePattern> pattern_;
+  Eigen::VectorXd residual_, scale_;
+};
+
+}  // namespace spar::solvers::detail
