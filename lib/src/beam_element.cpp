@@ -166,7 +166,8 @@ BeamStrains beam_strains(const GeometricallyExactBeam& beam, int e, int g, const
 
 void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Configuration& q,
                            BeamEvaluation what, BeamElementResult& result) {
-  const bool with_stiffness = (what == BeamEvaluation::force_and_stiffness);
+  const bool with_stiffness = (what != BeamEvaluation::force);
+  const bool rotation_blocks = (what == BeamEvaluation::force_and_stiffness);
   const detail::RelativeRotations rel = detail::relative_rotations(beam, e, q);
   const int k = rel.node_count;
   const int n = frame_dofs * k;  // = size of y = size of Δ
@@ -194,6 +195,22 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
       for (int t = 0; t < maps[j].count; ++t)
         g_y.segment<3>(3 * j) += maps[j].coefficient[t] * g_z.segment<3>(3 * maps[j].z_block[t]);
     if (!with_stiffness) continue;
+    if (!rotation_blocks) {
+      // Only the x′ rows of H_z reach a translation row or column of K (B9 with the rotation
+      // rows left out): H_z(x′, ·) = w (B_x′ᵀ C B + G(x′, ·)), G(x′, ·) from B6.
+      const Eigen::Matrix<double, 6, 3> B_x = B.leftCols<3>();
+      Eigen::Matrix<double, 3, 12> H_x = gp.weight * (B_x.transpose() * C * B);
+      H_x.middleCols<3>(3 * z_a) -=
+          gp.weight * rel.reference * lie::hat(Vector3(kin.exp_tangent.rotation * stress.head<3>()));
+      H_x.middleCols<3>(3 * z_theta) -=
+          gp.weight * kin.rotation * lie::hat(Vector3(stress.head<3>())) * kin.exp_tangent.tangent;
+      for (int j = 0; j < k; ++j)
+        for (int l = j; l < 2 * k; ++l)
+          for (int t = 0; t < maps[l].count; ++t)
+            H_y.block<3, 3>(3 * j, 3 * l) += gp.shape_derivative[j] * maps[l].coefficient[t] *
+                                             H_x.middleCols<3>(3 * maps[l].z_block[t]);
+      continue;
+    }
 
     const Matrix12 H_z = gp.weight * (B.transpose() * C * B +
                                       geometric_stiffness(kin, f, rel, stress.head<3>(),
@@ -248,7 +265,9 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
     K.middleRows<3>(3).noalias() += d_psi_d_first[I].transpose() * HJ.middleRows<3>(3 * (k + I));
     K.middleRows<3>(6 * I + 3).noalias() = d_psi_d_own[I].transpose() * HJ.middleRows<3>(3 * (k + I));
   }
-  // Second-order terms of ψ_I(Δφ_0, Δφ_I) contracted with λ = ∂Π/∂ψ_I (B10).
+  // Second-order terms of ψ_I(Δφ_0, Δφ_I) contracted with λ = ∂Π/∂ψ_I (B10): rotation–rotation
+  // blocks only.
+  if (!rotation_blocks) return;
   for (int I = 1; I < k; ++I) {
     const Vector3 lambda = g_y.segment<3>(3 * (k + I));
     const Vector3& psi = rel.psi[I];

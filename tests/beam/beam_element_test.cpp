@@ -133,6 +133,25 @@ TEST_CASE("beam stiffness is the exact symmetric Hessian in the exponential char
   });
 }
 
+TEST_CASE("the translation-only stiffness is the full stiffness without its rotation blocks",
+          "[gebt]") {
+  // 003's frozen strategy replaces the rotation–rotation blocks by those of t = 0, so the kernel
+  // skips them; every other entry (translation rows and columns) must be the full stiffness's,
+  // to round-off (the same products, summed in the same order up to the skipped terms).
+  for_each_deformed_element(9u, [](const core::GeometricallyExactBeam& beam, int e, const core::Configuration& q) {
+    core::BeamElementResult full, translation;
+    core::evaluate_beam_element(beam, e, q, core::BeamEvaluation::force_and_stiffness, full);
+    core::evaluate_beam_element(beam, e, q, core::BeamEvaluation::force_and_translation_stiffness,
+                                translation);
+    Eigen::MatrixXd expected = full.stiffness;
+    const Eigen::Index k = expected.rows() / 6;
+    for (Eigen::Index I = 0; I < k; ++I)
+      for (Eigen::Index J = 0; J < k; ++J) expected.block<3, 3>(6 * I + 3, 6 * J + 3).setZero();
+    CHECK(relative(Eigen::MatrixXd(translation.stiffness), expected) <= 1e-13);
+    CHECK(relative(Eigen::VectorXd(translation.internal_force), Eigen::VectorXd(full.internal_force)) == 0.0);
+  });
+}
+
 TEST_CASE("the local tangent is the derivative of the internal force along q + Delta", "[gebt]") {
   // ∂f(q ⊕ Δ)/∂Δ = H + ½ blockdiag(hat(m_I)): the matrix a Newton iteration with right-trivialized
   // updates needs, checked against central differences of the raw internal force.

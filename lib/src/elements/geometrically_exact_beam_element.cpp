@@ -33,9 +33,10 @@ void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const Eleme
 
   // Strain energy: force and the exact stiffness along q ⊕ Δ (docs/beam.md B1–B12).
   BeamElementResult internal;
-  evaluate_beam_element(*beam_, element_, q,
-                        request.stiffness ? BeamEvaluation::force_and_stiffness : BeamEvaluation::force,
-                        internal);
+  const BeamEvaluation what = !request.stiffness             ? BeamEvaluation::force
+                              : request.skip_rotation_blocks ? BeamEvaluation::force_and_translation_stiffness
+                                                             : BeamEvaluation::force_and_stiffness;
+  evaluate_beam_element(*beam_, element_, q, what, internal);
   if (request.residual) out.residual += internal.internal_force;
   if (request.stiffness) {
     out.stiffness += internal.stiffness;

@@ -28,7 +28,9 @@ using ElementMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eige
                                     max_beam_element_dofs, max_beam_element_dofs>;
 
 /// What to evaluate (deal.II-style update flags): the stiffness costs ~5× the force.
-enum class BeamEvaluation { force, force_and_stiffness };
+/// `force_and_translation_stiffness` leaves the rotation–rotation blocks of the stiffness zero
+/// (003's frozen iteration matrix keeps them from t = 0) and skips the work only they need.
+enum class BeamEvaluation { force, force_and_stiffness, force_and_translation_stiffness };
 
 /// The result of one element evaluation. Fixed capacity: no heap allocation.
 struct BeamElementResult {
