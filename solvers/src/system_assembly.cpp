@@ -101,6 +101,9 @@ void SystemAssembly::compute_element(int id, const core::ElementInput& in,
   request.mass = c && dynamic && c->mass != 0.0;
   request.damping = c && dynamic && c->damping != 0.0;
   request.skip_rotation_blocks = use_frozen;
+  // A converged step ends on a residual-only evaluation (docs/dynamics.md D4): the energies of
+  // the accepted state come from there.
+  request.energy = (c == nullptr);
   const int n = static_cast<int>(w.dofs.size());
   w.output.reset(n, request);
   element.evaluate(in, request, w.output);

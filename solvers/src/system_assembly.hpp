@@ -71,7 +71,7 @@ public:
   const Eigen::VectorXd& residual() const { return residual_; }
   Eigen::VectorXd& residual() { return residual_; }
   const Eigen::VectorXd& scale() const { return scale_; }
-  /// The energies of the last evaluate() (each element fills them on every evaluation).
+  /// The energies of the last residual-only evaluate() (elements compute them only there).
   SummedEnergies energies() const;
   /// The power −Σ (Bᵀλ) · v of the constraint forces of the last evaluate() at the global
   /// velocity v (non-zero for drivers; ≈ 0 for passive joints).

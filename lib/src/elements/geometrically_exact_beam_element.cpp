@@ -50,7 +50,7 @@ void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const Eleme
     for (int I = 0; I < k; ++I) {
       const Eigen::Vector3d f = in.load_factor * rho_a * shape_integrals_[I] * in.gravity;
       if (request.residual) out.residual.segment<3>(frame_dofs * I) -= f;
-      out.energy.gravity -= f.dot(q.position[blocks_[I]]);
+      if (request.energy) out.energy.gravity -= f.dot(q.position[blocks_[I]]);
     }
 
   // Inertia (003 eqs. 30–32): M v̇ + f_gyr(v), M constant, C = ∂f_gyr/∂v.
@@ -63,7 +63,7 @@ void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const Eleme
   if (request.residual) out.residual += inertia.mass * a + inertia.gyroscopic;
   if (request.mass) out.mass += inertia.mass;
   if (request.damping) out.damping += inertia.gyroscopic_tangent;
-  out.energy.kinetic = kinetic_energy(inertia, v);
+  if (request.energy) out.energy.kinetic = kinetic_energy(inertia, v);
 }
 
 }  // namespace spar::core

@@ -14,7 +14,7 @@ void add_external_force(const ElementInput& in, const std::vector<int>& blocks,
                         const Eigen::Ref<const Eigen::VectorXd>& f, const ElementRequest& request,
                         ElementOutput& out) {
   if (request.residual) out.residual -= f;
-  if (!in.dynamic()) return;
+  if (!in.dynamic() || !request.energy) return;
   Eigen::VectorXd v(f.size());
   gather(*in.q, blocks, *in.velocity, v);
   out.energy.external_power = f.dot(v);

@@ -11,7 +11,7 @@ void RigidBodyElement::evaluate(const ElementInput& in, const ElementRequest& re
   // Weight: a dead force λ m g at the centre of mass, potential −λ m g · x.
   const Eigen::Vector3d weight = in.load_factor * body_.mass * in.gravity;
   if (request.residual) out.residual.head<3>() -= weight;
-  out.energy.gravity = -weight.dot(q.position[body_.node]);
+  if (request.energy) out.energy.gravity = -weight.dot(q.position[body_.node]);
 
   if (!in.dynamic()) return;
   const Eigen::Index offset = q.blocks[body_.node].offset;
@@ -22,7 +22,7 @@ void RigidBodyElement::evaluate(const ElementInput& in, const ElementRequest& re
   if (request.residual) out.residual += inertia.mass * a + inertia.gyroscopic;
   if (request.mass) out.mass += inertia.mass;
   if (request.damping) out.damping += inertia.gyroscopic_tangent;
-  out.energy.kinetic = kinetic_energy(inertia, v);
+  if (request.energy) out.energy.kinetic = kinetic_energy(inertia, v);
 }
 
 }  // namespace spar::core

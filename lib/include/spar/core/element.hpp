@@ -30,6 +30,8 @@ struct ElementRequest {
   bool stiffness = false;
   bool damping = false;
   bool mass = false;
+  /// Kinetic energy, gravity potential and external power (the strain energy comes with the
+  /// residual of elements that have one, at no cost).
   bool energy = false;
   /// The caller keeps the rotation–rotation blocks of every frame block (003's frozen iteration
   /// matrix) and overwrites them: an element may leave them out of K, C and M to save time.
