@@ -71,8 +71,9 @@ TEST_CASE("velocity consistency: the flagship slider-crank run stores the rate o
   // driving moment (500 N m, switched on at t = 0) acts on a control point of rotary inertia
   // ~4e-6 kg m², whose rotation mode (ω ~ 5e5 rad/s, ωh ~ 270) the step does not resolve;
   // generalized-α overshoots in velocity for such a mode (Chung & Hulbert 1993) and damps it by
-  // only 0.9 per step. The algorithmic accelerations reach ~1e9 rad/s², and the velocity and the
-  // rate differ by up to 925 rad/s (steps 6–7, where the frozen iteration with this loose
+  // only 0.9 per step. The velocity and the rate differ by up to 925 rad/s = h c Δa with
+  // c = 6.9e-4 (tests/support/velocity_consistency.hpp): algorithmic accelerations changing by
+  // ~3e9 rad/s² from a step to the next (steps 6–7, where the frozen iteration with this loose
   // tolerance lands on another branch of the oscillation; the update strategy with a tight
   // tolerance stays within 125 rad/s). Bounds therefore: acceleration_scale 1e7 rad/s², i.e.
   // 5000 rad/s per step — a tenth of the 5e4 rad/s an 8π alias gives, 5× the measured 925.
