@@ -114,7 +114,8 @@ const RigidBody& Model::rigid_body(int b) const {
 
 void Model::add_load(const Load& load, LoadHistory history) {
   const char* where = "core::Model::add_load";
-  const int index = load_count_++;
+  // The load is counted only once it is accepted: a refused load leaves the model as it was.
+  const int index = load_count_;
   if (const auto* f = std::get_if<NodalForce>(&load)) {
     check_frame(f->node, where);
     check_finite(f->force, "the force", where);
@@ -123,6 +124,7 @@ void Model::add_load(const Load& load, LoadHistory history) {
     check_finite(m->moment, "the moment", where);
   }
   if (std::holds_alternative<NodalForce>(load) || std::holds_alternative<NodalMoment>(load)) {
+    ++load_count_;
     add_element(std::make_unique<NodalLoadElement>(load, std::move(history), index));
     return;
   }
@@ -133,6 +135,7 @@ void Model::add_load(const Load& load, LoadHistory history) {
     check_finite(d->force_per_length, "the force per length", where);
   if (const auto* d = std::get_if<DistributedMoment>(&load))
     check_finite(d->moment_per_length, "the moment per length", where);
+  ++load_count_;
   for (int e = 0; e < carrier.element_count(); ++e)
     add_element(std::make_unique<DistributedLoadElement>(load, carrier, e, history, index));
 }
