@@ -8,6 +8,7 @@ void ElementOutput::reset(int n, const ElementRequest& request) {
   if (request.damping) damping.setZero(n, n);
   if (request.mass) mass.setZero(n, n);
   energy = {};
+  if (request.energy) external_force.setZero(n);
 }
 
 }  // namespace spar::core

@@ -88,8 +88,9 @@ struct GeneralizedAlpha::Implementation {
   int last_iterations = 0;
   std::string last_failure;  // why the last failed iteration failed, for the final message
   DynamicCounters counters;
-  // Energy balance (eq. D8).
-  double initial_energy = 0.0, external_work = 0.0, last_power = 0.0;
+  // Energy balance (eq. D8): the work W_ext and the forces of the last accepted state.
+  double initial_energy = 0.0, external_work = 0.0;
+  Eigen::VectorXd last_work_force;
   std::vector<std::pair<double, std::string>> events;
 
   Implementation(core::Model& m, ConstraintList c, const DynamicOptions& o)
@@ -220,7 +221,7 @@ struct GeneralizedAlpha::Implementation {
     // The balance starts here: energies and powers at t = 0 with the consistent accelerations.
     evaluate(t, nullptr, 1.0);
     initial_energy = mechanical_energy();
-    last_power = power();
+    last_work_force = work_force();
     initialized = true;
   }
 
@@ -229,8 +230,9 @@ struct GeneralizedAlpha::Implementation {
     return e.kinetic + e.strain + e.gravity;
   }
 
-  /// Power of the external loads and of the constraint forces at the last evaluation.
-  double power() const { return assembly.energies().external_power + assembly.constraint_power(velocity); }
+  /// The forces whose work the balance books, at the last evaluation: the external loads without
+  /// a potential and the constraint forces −Bᵀλ (non-zero work for drivers only).
+  Eigen::VectorXd work_force() const { return assembly.external_force() - assembly.constraint_force(); }
 
   // One step -------------------------------------------------------------------------------------
 
@@ -285,9 +287,12 @@ struct GeneralizedAlpha::Implementation {
     }
     if (converged) {
       algorithmic_acceleration = a + (1 - alpha.alpha_f) / (1 - alpha.alpha_m) * acceleration;
-      const double power_next = power();
-      external_work += 0.5 * h * (last_power + power_next);
-      last_power = power_next;
+      // Trapezoidal work along the step's increment, W += ½ (f_n + f_{n+1}) · hΔq (eq. D8): the
+      // increment is what the configuration did, so an unresolved velocity oscillation of a
+      // stiff mode (ωh ≫ 1) books no spurious work.
+      Eigen::VectorXd force_next = work_force();
+      external_work += 0.5 * (last_work_force + force_next).dot(increment);
+      last_work_force = std::move(force_next);
       t = t_next;
       return true;
     }
@@ -443,7 +448,7 @@ struct GeneralizedAlpha::Implementation {
     // The balance carries on across the change: a jump of the energy at the event shows in the
     // numerical dissipation, where a user sees it.
     evaluate(t, nullptr, 1.0);
-    last_power = power();
+    last_work_force = work_force();
   }
 };
 

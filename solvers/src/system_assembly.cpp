@@ -87,6 +87,7 @@ void SystemAssembly::rebuild() {
   }
   pattern_ = std::make_unique<core::SparsePattern>(size(), pattern_blocks);
   residual_ = scale_ = Eigen::VectorXd::Zero(size());
+  external_force_ = constraint_force_ = Eigen::VectorXd::Zero(dof_count_);
 }
 
 void SystemAssembly::compute_element(int id, const core::ElementInput& in,
@@ -191,15 +192,21 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
   // Gather: dynamic rows Σ r_e + Σ Bᵀλ and the size of their terms; constraint rows Φ.
   residual_.setZero();
   scale_.setZero();
+  constraint_force_.setZero();
+  const bool with_energy = (c == nullptr);
+  if (with_energy) external_force_.setZero();
   for (const ElementWork& w : element_work_)
     for (std::size_t i = 0; i < w.dofs.size(); ++i) {
-      residual_(w.dofs[i]) += w.output.residual(static_cast<Eigen::Index>(i));
-      scale_(w.dofs[i]) += std::abs(w.output.residual(static_cast<Eigen::Index>(i)));
+      const auto local = static_cast<Eigen::Index>(i);
+      residual_(w.dofs[i]) += w.output.residual(local);
+      scale_(w.dofs[i]) += std::abs(w.output.residual(local));
+      if (with_energy) external_force_(w.dofs[i]) += w.output.external_force(local);
     }
   for (const ConstraintWork& w : constraint_work_) {
     for (std::size_t i = 0; i < w.dofs.size(); ++i) {
       residual_(w.dofs[i]) += w.force(static_cast<Eigen::Index>(i));
       scale_(w.dofs[i]) += std::abs(w.force(static_cast<Eigen::Index>(i)));
+      constraint_force_(w.dofs[i]) += w.force(static_cast<Eigen::Index>(i));
     }
     residual_.segment(dof_count_ + w.first_multiplier, w.value.size()) = w.value;
   }
@@ -223,17 +230,8 @@ SummedEnergies SystemAssembly::energies() const {
     sum.kinetic += w.output.energy.kinetic;
     sum.strain += w.output.energy.strain;
     sum.gravity += w.output.energy.gravity;
-    sum.external_power += w.output.energy.external_power;
   }
   return sum;
-}
-
-double SystemAssembly::constraint_power(const Eigen::VectorXd& velocity) const {
-  double power = 0.0;
-  for (const ConstraintWork& w : constraint_work_)
-    for (std::size_t i = 0; i < w.dofs.size(); ++i)
-      power -= w.force(static_cast<Eigen::Index>(i)) * velocity(w.dofs[i]);
-  return power;
 }
 
 }  // namespace spar::solvers::detail

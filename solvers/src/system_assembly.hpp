@@ -34,7 +34,7 @@ enum class Chart {
 
 /// The model's energies summed over its elements.
 struct SummedEnergies {
-  double kinetic = 0.0, strain = 0.0, gravity = 0.0, external_power = 0.0;
+  double kinetic = 0.0, strain = 0.0, gravity = 0.0;
 };
 
 class SystemAssembly {
@@ -73,9 +73,12 @@ public:
   const Eigen::VectorXd& scale() const { return scale_; }
   /// The energies of the last residual-only evaluate() (elements compute them only there).
   SummedEnergies energies() const;
-  /// The power −Σ (Bᵀλ) · v of the constraint forces of the last evaluate() at the global
-  /// velocity v (non-zero for drivers; ≈ 0 for passive joints).
-  double constraint_power(const Eigen::VectorXd& velocity) const;
+  /// The external force of the elements' non-potential loads at the last residual-only
+  /// evaluate() (global tangent layout, dof_count() entries).
+  const Eigen::VectorXd& external_force() const { return external_force_; }
+  /// Σ Bᵀλ of the constraints at the last evaluate() (global tangent layout): the constraint
+  /// forces on the blocks are its negative.
+  const Eigen::VectorXd& constraint_force() const { return constraint_force_; }
   /// The constraint's Jacobian B (m × n) of the last evaluate(), before the chart's map.
   const std::vector<joints::Constraint*>& constraints() const { return constraints_; }
 
@@ -110,7 +113,7 @@ private:
   std::vector<ElementWork> element_work_;
   std::vector<ConstraintWork> constraint_work_;
   std::unique_ptr<core::SparsePattern> pattern_;
-  Eigen::VectorXd residual_, scale_;
+  Eigen::VectorXd residual_, scale_, external_force_, constraint_force_;
 };
 
 }  // namespace spar::solvers::detail

@@ -8,16 +8,12 @@ namespace spar::core {
 
 namespace {
 
-/// Adds −f to the residual and f · v to the external power: an external force enters the dynamic
-/// residual (eq. M4) with a minus sign.
-void add_external_force(const ElementInput& in, const std::vector<int>& blocks,
-                        const Eigen::Ref<const Eigen::VectorXd>& f, const ElementRequest& request,
+/// Adds −f to the residual (an external force enters the dynamic residual, eq. M4, with a minus
+/// sign) and, on an energy request, f to the external force whose work the integrator books.
+void add_external_force(const Eigen::Ref<const Eigen::VectorXd>& f, const ElementRequest& request,
                         ElementOutput& out) {
   if (request.residual) out.residual -= f;
-  if (!in.dynamic() || !request.energy) return;
-  Eigen::VectorXd v(f.size());
-  gather(*in.q, blocks, *in.velocity, v);
-  out.energy.external_power = f.dot(v);
+  if (request.energy) out.external_force += f;
 }
 
 }  // namespace
@@ -51,7 +47,7 @@ void NodalLoadElement::evaluate(const ElementInput& in, const ElementRequest& re
     if (request.stiffness && moment.frame == MomentFrame::inertial)
       out.stiffness.bottomRightCorner<3, 3>() -= lie::hat(Eigen::Vector3d(f.tail<3>()));
   }
-  add_external_force(in, blocks_, f, request, out);
+  add_external_force(f, request, out);
 }
 
 DistributedLoadElement::DistributedLoadElement(const Load& load, const GeometricallyExactBeam& beam,
@@ -77,7 +73,7 @@ void DistributedLoadElement::evaluate(const ElementInput& in, const ElementReque
     for (std::size_t I = 0; I < blocks_.size(); ++I)
       f.segment<3>(frame_dofs * static_cast<Eigen::Index>(I)) =
           scale * shape_integrals_[I] * force->force_per_length;
-    add_external_force(in, blocks_, f, request, out);
+    add_external_force(f, request, out);
     return;
   }
   const auto& moment = std::get<DistributedMoment>(load_);
@@ -86,7 +82,7 @@ void DistributedLoadElement::evaluate(const ElementInput& in, const ElementReque
   distributed_moment_contribution(*beam_, element_, *in.q, scale * moment.moment_per_length,
                                   moment.frame, f, request.stiffness ? &tangent : nullptr);
   if (request.stiffness) out.stiffness -= tangent;
-  add_external_force(in, blocks_, f, request, out);
+  add_external_force(f, request, out);
 }
 
 }  // namespace spar::core

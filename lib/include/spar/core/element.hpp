@@ -13,7 +13,8 @@
 ///     stiffness K = ∂r(q ⊕ Δ, v, v̇)/∂Δ at Δ = 0 (local increments, eq. M5),
 ///     damping   C = ∂r/∂v,
 ///     mass      M = ∂r/∂v̇.
-/// A configuration-dependent mass matrix contributes ∂(M(q) v̇)/∂q to K.
+/// A configuration-dependent mass matrix contributes ∂(M(q) v̇)/∂q to K. On an energy request an
+/// element also reports its energies and the external force of its non-potential loads.
 
 #include <spar/core/configuration.hpp>
 
@@ -30,7 +31,7 @@ struct ElementRequest {
   bool stiffness = false;
   bool damping = false;
   bool mass = false;
-  /// Kinetic energy, gravity potential and external power (the strain energy comes with the
+  /// Kinetic energy, gravity potential and external force (the strain energy comes with the
   /// residual of elements that have one, at no cost).
   bool energy = false;
   /// The caller keeps the rotation–rotation blocks of every frame block (003's frozen iteration
@@ -54,12 +55,11 @@ struct ElementInput {
   bool dynamic() const { return velocity != nullptr; }
 };
 
-/// Energies of one element (J) and the power of its non-conservative external forces (W).
+/// Energies of one element (J).
 struct ElementEnergy {
   double kinetic = 0.0;
   double strain = 0.0;
-  double gravity = 0.0;          ///< gravity potential −∫ ρ g · x
-  double external_power = 0.0;  ///< f_ext · v of loads that have no potential here
+  double gravity = 0.0;  ///< gravity potential −∫ ρ g · x
 };
 
 /// What an element returns; owned by the caller and reused across calls, so a kernel that resizes
@@ -70,6 +70,9 @@ struct ElementOutput {
   Eigen::MatrixXd damping;
   Eigen::MatrixXd mass;
   ElementEnergy energy;
+  /// With `energy`: the external generalized force f_ext of loads that have no potential here
+  /// (its part of −r), whose work the integrator books (docs/dynamics.md D8). Zero otherwise.
+  Eigen::VectorXd external_force;
 
   /// Sizes and zeroes what `request` asks for, for an element with n local dofs.
   void reset(int n, const ElementRequest& request);

@@ -2,7 +2,7 @@
 /// \file
 /// External loads as Elements (003 eq. 33): a concentrated force or moment on a frame block, and
 /// a force or moment per unit length on one element of a beam. Each enters the residual as −f_ext
-/// and reports the power f_ext · v it delivers in dynamics (for the energy balance).
+/// and, on an energy request, reports f_ext for the energy balance (docs/dynamics.md D8).
 ///
 /// Scale: the load factor λ in statics; history(t) in dynamics (1 without a history).
 
