@@ -1,4 +1,7 @@
 #include <spar/core/results_writer.hpp>
+
+#include "xdmf_sidecar.hpp"
+
 #include <spar/error.hpp>
 #include <spar/lie/quaternion.hpp>
 
@@ -11,7 +14,6 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <utility>
 
@@ -72,21 +74,6 @@ std::string format_double(double value) {
   return std::string(text, result.ptr);
 }
 
-/// `text` with the XML special characters replaced by entities.
-std::string xml_escape(const std::string& text) {
-  std::string result;
-  for (char c : text) {
-    switch (c) {
-      case '&': result += "&amp;"; break;
-      case '<': result += "&lt;"; break;
-      case '>': result += "&gt;"; break;
-      case '"': result += "&quot;"; break;
-      default: result += c;
-    }
-  }
-  return result;
-}
-
 /// Why `path` cannot be created, as far as the file system tells.
 std::string creation_failure_reason(const std::string& path) {
   namespace fs = std::filesystem;
@@ -133,67 +120,6 @@ std::string sidecar_path(const std::string& path) {
   return std::filesystem::path(path).replace_extension(".xmf").string();
 }
 
-/// What the sidecar describes: the HDF5 file's name (relative to the sidecar) and its steps.
-struct XdmfInput {
-  std::string h5_name;
-  const ResultsLayout* layout;
-  const std::vector<double>* times;  ///< the flushed steps' times
-};
-
-/// A HyperSlab DataItem: step `step`'s `rows × 3` block (the first 3 columns) of dataset `name`,
-/// whose shape is `steps × rows × columns`.
-std::string step_slab(const XdmfInput& in, const std::string& name, std::size_t step, int rows, int columns,
-                      const std::string& indent) {
-  const std::string r = std::to_string(rows);
-  return indent + "<DataItem ItemType=\"HyperSlab\" Dimensions=\"" + r + " 3\" Type=\"HyperSlab\">\n" + indent +
-         " <DataItem Dimensions=\"3 3\" NumberType=\"Int\" Format=\"XML\">" + std::to_string(step) + " 0 0 1 1 1 1 " + r + " 3</DataItem>\n" +
-         indent + " <DataItem Dimensions=\"" + std::to_string(in.times->size()) + " " + r + " " + std::to_string(columns) +
-         "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" + in.h5_name + ":" + name + "</DataItem>\n" + indent +
-         "</DataItem>\n";
-}
-
-/// Beam k at one step: a polyline through its sampled centerline points.
-std::string beam_grid(const XdmfInput& in, std::size_t step, std::size_t k) {
-  const std::string p = std::to_string(in.layout->centerline_points[k]);
-  const std::string beam = std::to_string(k);
-  return "    <Grid Name=\"beam" + beam + "\" GridType=\"Uniform\">\n" +
-         "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"1\" NodesPerElement=\"" + p + "\">\n" +
-         "      <DataItem Dimensions=\"1 " + p + "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + in.h5_name +
-         ":/xdmf/polyline" + beam + "</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
-         step_slab(in, "/centerlines/beam" + beam, step, in.layout->centerline_points[k], 3, "      ") +
-         "     </Geometry>\n    </Grid>\n";
-}
-
-/// The nodes at one step: a point cloud with the nodes' translational velocity when recorded.
-std::string nodes_grid(const XdmfInput& in, std::size_t step) {
-  const int n = in.layout->node_count;
-  std::string grid = "    <Grid Name=\"nodes\" GridType=\"Uniform\">\n     <Topology TopologyType=\"Polyvertex\" "
-                     "NumberOfElements=\"" + std::to_string(n) + "\" NodesPerElement=\"1\">\n" +
-                     "      <DataItem Dimensions=\"" + std::to_string(n) +
-                     "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + in.h5_name +
-                     ":/xdmf/polyvertex</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
-                     step_slab(in, "/positions", step, n, 3, "      ") + "     </Geometry>\n";
-  if (in.layout->velocities)
-    grid += "     <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n" +
-            step_slab(in, "/velocities", step, n, 6, "      ") + "     </Attribute>\n";
-  return grid + "    </Grid>\n";
-}
-
-/// The XDMF document: a temporal collection with one spatial collection per flushed step
-/// (its time, one polyline grid per beam, the nodes), every array a HyperSlab of the HDF5 file.
-std::string xdmf_document(const XdmfInput& in) {
-  std::string xml = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"3.0\">\n"
-                    " <Domain>\n  <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (std::size_t step = 0; step < in.times->size(); ++step) {
-    xml += "   <Grid Name=\"step" + std::to_string(step) + "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n" +
-           "    <Time Value=\"" + format_double((*in.times)[step]) + "\"/>\n";
-    for (std::size_t k = 0; k < in.layout->centerline_points.size(); ++k) xml += beam_grid(in, step, k);
-    if (in.layout->node_count > 0) xml += nodes_grid(in, step);
-    xml += "   </Grid>\n";
-  }
-  return xml + "  </Grid>\n </Domain>\n</Xdmf>\n";
-}
-
 }  // namespace
 
 struct ResultsWriter::Impl {
@@ -205,7 +131,8 @@ struct ResultsWriter::Impl {
   std::vector<Series> series;  ///< /time first; the others in append order
   int positions = -1, quaternions = -1, velocities = -1, multipliers = -1;
   int first_scalar = 0, first_probe = 0, first_centerline = 0;
-  std::vector<double> times;   ///< every appended step's time
+  double last_time = 0;        ///< the last appended step's time
+  std::unique_ptr<detail::XdmfSidecar> sidecar;
   int appended = 0;
   int flushed = 0;
 
@@ -345,27 +272,9 @@ struct ResultsWriter::Impl {
     flushed = appended;
   }
 
-  /// Rewrites the sidecar through a temporary file, so a reader never sees it half written.
-  void write_xdmf() const {
-    const std::vector<double> flushed_times(times.begin(), times.begin() + flushed);
-    const XdmfInput input{xml_escape(std::filesystem::path(path).filename().string()), &layout, &flushed_times};
-    const std::string temporary = xdmf_path + ".tmp";
-    {
-      std::ofstream out(temporary, std::ios::trunc);
-      out << xdmf_document(input);
-      if (!out)
-        throw Error("cannot write the XDMF sidecar " + temporary, where("flush"),
-                    "check that the output folder is writable and the disk is not full");
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, xdmf_path, ec);
-    if (ec)
-      throw Error("cannot rename " + temporary + " to " + xdmf_path + ": " + ec.message(), where("flush"),
-                  "check that the output folder is writable");
-  }
-
-  /// Closes every dataset and the file; returns false if HDF5 reported a failure.
+  /// Closes every dataset, the file and the sidecar; returns false if HDF5 reported a failure.
   bool release() {
+    sidecar.reset();
     bool ok = true;
     for (Series& s : series)
       if (s.dataset >= 0) {
@@ -386,9 +295,9 @@ struct ResultsWriter::Impl {
   }
 
   void check_step(const ResultsStep& step) const {
-    if (!std::isfinite(step.time) || (appended > 0 && !(step.time > times.back())))
+    if (!std::isfinite(step.time) || (appended > 0 && !(step.time > last_time)))
       throw Error("step.time = " + format_double(step.time) + " is not finite or not after the previous step's " +
-                      (appended > 0 ? format_double(times.back()) : std::string("-")),
+                      (appended > 0 ? format_double(last_time) : std::string("-")),
                   where("append") + " at step " + std::to_string(appended),
                   "append converged steps only, in increasing time");
     const auto n = static_cast<std::size_t>(layout.node_count);
@@ -461,7 +370,7 @@ struct ResultsWriter::Impl {
       const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rows = step.centerlines[k];
       series[static_cast<std::size_t>(first_centerline) + k].push(rows.data(), static_cast<std::size_t>(rows.size()));
     }
-    times.push_back(step.time);
+    last_time = step.time;
   }
 };
 
@@ -479,6 +388,8 @@ ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, i
     for (Series& s : impl.series) impl.create_dataset(s);
     impl.write_topologies();
     impl.set_attribute(impl.file, "schema", "spar.results/1", "ResultsWriter");
+    impl.sidecar = std::make_unique<detail::XdmfSidecar>(
+        impl.xdmf_path, std::filesystem::path(h5_path).filename().string(), impl.layout);
     flush();
   } catch (...) {
     impl.release();
@@ -543,9 +454,11 @@ void ResultsWriter::append(const ResultsStep& step) {
 void ResultsWriter::flush() {
   Impl& impl = *impl_;
   impl.require_open("flush");
+  const int first = impl.flushed;
+  const std::vector<double> times = impl.series[0].buffer;  // the buffered steps' times
   impl.write_block();
   impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "flush");
-  impl.write_xdmf();
+  impl.sidecar->append(first, times, impl.flushed);
 }
 
 void ResultsWriter::close() {
