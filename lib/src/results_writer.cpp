@@ -1,5 +1,6 @@
 #include <spar/core/results_writer.hpp>
 
+#include "hdf5_attributes.hpp"
 #include "xdmf_sidecar.hpp"
 
 #include <spar/error.hpp>
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <filesystem>
 #include <set>
 #include <utility>
@@ -38,11 +40,13 @@ private:
   herr_t (*close_)(hid_t);
 };
 
-/// One time-history dataset of `steps × shape` doubles, extended by every block write.
+/// One time-history dataset of `steps × shape` values, extended by every block write.
 struct Series {
   std::string name;            ///< absolute path in the file, e.g. "/positions"
+  std::string unit;            ///< stored as the dataset's `units` attribute
   std::string description;     ///< stored as the dataset's `description` attribute
   std::vector<hsize_t> shape;  ///< per-step shape, {} for one scalar per step
+  bool integer = false;        ///< stored as int32 (counters), else as doubles
   hid_t dataset = H5I_INVALID_HID;
   std::vector<double> buffer;  ///< steps not yet written, row-major
 
@@ -86,14 +90,20 @@ std::string creation_failure_reason(const std::string& path) {
   return "HDF5 refused to create it (the file may be open in another program, or the disk full)";
 }
 
-/// A `name`: non-empty, no '/' (it becomes a dataset name), unique within `seen`.
-void check_name(const std::string& name, const char* field, std::set<std::string>& seen, const std::string& where) {
+/// A quantity of layout.`field`: a name that is non-empty, has no '/' (it becomes a dataset name)
+/// and is unique within `seen`; a unit and a description.
+void check_quantity(const ResultsQuantity& quantity, const std::string& field, std::set<std::string>& seen,
+                    const std::string& where) {
+  const std::string& name = quantity.name;
   if (name.empty() || name.find('/') != std::string::npos)
-    throw Error(std::string("layout.") + field + " holds the name \"" + name + "\", which is empty or contains '/'",
-                where, "use plain names such as kinetic_energy");
+    throw Error("layout." + field + " holds the name \"" + name + "\", which is empty or contains '/'", where,
+                "use plain names such as kinetic_energy");
   if (!seen.insert(name).second)
-    throw Error(std::string("layout.") + field + " holds \"" + name + "\" twice", where,
-                "give every " + std::string(field) + " entry a distinct name");
+    throw Error("layout." + field + " holds \"" + name + "\" twice", where,
+                "give every " + field + " entry a distinct name");
+  if (quantity.unit.empty() || quantity.description.empty())
+    throw Error("layout." + field + " entry \"" + name + "\" has no " + (quantity.unit.empty() ? "unit" : "description"),
+                where, "state its SI unit (\"1\" for ratios and counts) and what it is: the file carries both");
 }
 
 /// Checks the layout's counts and names; throws spar::Error naming the field.
@@ -106,8 +116,13 @@ void check_layout(const ResultsLayout& layout, int flush_every, const std::strin
     throw Error("flush_every = " + std::to_string(flush_every) + " must be at least 1", where,
                 "pass the number of steps per block write, e.g. 100");
   std::set<std::string> scalars, probes;
-  for (const std::string& name : layout.scalar_names) check_name(name, "scalar_names", scalars, where);
-  for (const std::string& name : layout.probe_names) check_name(name, "probe_names", probes, where);
+  for (const ResultsQuantity& scalar : layout.scalars) check_quantity(scalar, "scalars", scalars, where);
+  for (const ResultsQuantity& probe : layout.probes) {
+    check_quantity(probe, "probes", probes, where);
+    if (probe.integer)
+      throw Error("layout.probes entry \"" + probe.name + "\" is marked integer", where,
+                  "probes are 3-vectors of doubles; declare counters as scalars");
+  }
   for (std::size_t k = 0; k < layout.centerline_points.size(); ++k)
     if (layout.centerline_points[k] < 2)
       throw Error("layout.centerline_points[" + std::to_string(k) + "] = " + std::to_string(layout.centerline_points[k]) +
@@ -150,32 +165,42 @@ struct ResultsWriter::Impl {
   }
 
   /// Adds a series of `shape` per step and returns its index.
-  int add_series(std::string name, std::string description, std::vector<hsize_t> shape) {
-    series.push_back(Series{std::move(name), std::move(description), std::move(shape)});
+  int add_series(std::string name, std::string unit, std::string description, std::vector<hsize_t> shape,
+                 bool integer = false) {
+    series.push_back(Series{std::move(name), std::move(unit), std::move(description), std::move(shape), integer});
     return static_cast<int>(series.size()) - 1;
   }
 
   /// The series of the layout, in the order append() fills them.
   void plan_series() {
     const auto n = static_cast<hsize_t>(layout.node_count);
-    add_series("/time", "time of each step, s", {});
+    add_series("/time", "s", "time of each step", {});
     if (n > 0) {
-      positions = add_series("/positions", "node positions (inertial frame), m", {n, 3});
-      quaternions = add_series("/quaternions", "node rotations R as unit quaternions (w, x, y, z), w >= 0", {n, 4});
+      positions = add_series("/positions", "m", "node positions x (inertial frame), node by node", {n, 3});
+      quaternions = add_series("/quaternions", "1",
+                               "node rotations R (material to inertial) as unit quaternions (w, x, y, z), w >= 0",
+                               {n, 4});
       if (layout.velocities)
-        velocities = add_series("/velocities",
-                                "node velocities: x dot (inertial, m/s) then Omega (material, rad/s)", {n, 6});
+        velocities = add_series("/velocities", "m/s, rad/s",
+                                "node velocities: x dot (inertial, m/s) in columns 0-2, then the angular velocity "
+                                "Omega (material frame, rad/s) in columns 3-5",
+                                {n, 6});
     }
     if (layout.multiplier_count > 0)
-      multipliers = add_series("/multipliers", "Lagrange multipliers of the constraints",
+      multipliers = add_series("/multipliers", "N, N m",
+                               "Lagrange multipliers of the constraints, constraint by constraint: forces (N) for "
+                               "position constraints, moments (N m) for rotation constraints",
                                {static_cast<hsize_t>(layout.multiplier_count)});
     first_scalar = static_cast<int>(series.size());
-    for (const std::string& name : layout.scalar_names) add_series("/scalars/" + name, "per-step scalar " + name, {});
+    for (const ResultsQuantity& scalar : layout.scalars)
+      add_series("/scalars/" + scalar.name, scalar.unit, scalar.description, {}, scalar.integer);
     first_probe = static_cast<int>(series.size());
-    for (const std::string& name : layout.probe_names) add_series("/probes/" + name, "probe " + name + ", m", {3});
+    for (const ResultsQuantity& probe : layout.probes) add_series("/probes/" + probe.name, probe.unit, probe.description, {3});
     first_centerline = static_cast<int>(series.size());
     for (std::size_t k = 0; k < layout.centerline_points.size(); ++k)
-      add_series("/centerlines/beam" + std::to_string(k), "sampled centerline points of beam " + std::to_string(k) + ", m",
+      add_series("/centerlines/beam" + std::to_string(k), "m",
+                 "beam " + std::to_string(k) +
+                     "'s centerline (inertial frame) at points equally spaced in its knot parameter, root to tip",
                  {static_cast<hsize_t>(layout.centerline_points[k]), 3});
   }
 
@@ -208,18 +233,21 @@ struct ResultsWriter::Impl {
     const Hid creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
     H5Pset_chunk(creation, rank, chunk.data());
     const Hid links(intermediate_groups(), H5Pclose);
-    s.dataset = H5Dcreate2(file, s.name.c_str(), H5T_IEEE_F64LE, space, links, creation, H5P_DEFAULT);
+    s.dataset = H5Dcreate2(file, s.name.c_str(), s.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE, space, links, creation,
+                           H5P_DEFAULT);
     check(s.dataset < 0 ? -1 : 0, "create dataset " + s.name, "ResultsWriter");
-    set_attribute(s.dataset, "description", s.description, "ResultsWriter");
+    check(detail::describe_dataset(s.dataset, s.unit, s.description), "describe dataset " + s.name, "ResultsWriter");
   }
 
   /// An int dataset (`dims`) for the sidecar's topologies.
-  void write_ints(const std::string& name, const std::vector<int>& values, const std::vector<hsize_t>& dims) {
+  void write_ints(const std::string& name, const std::vector<int>& values, const std::vector<hsize_t>& dims,
+                  const std::string& description) {
     const Hid space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
     const Hid links(intermediate_groups(), H5Pclose);
     const Hid set(H5Dcreate2(file, name.c_str(), H5T_STD_I32LE, space, links, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
     check(set.valid() ? H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) : -1,
           "write dataset " + name, "ResultsWriter");
+    check(detail::describe_dataset(set, "1", description), "describe dataset " + name, "ResultsWriter");
   }
 
   /// Point indices 0 … count−1 of each sidecar topology: one polyline per beam, the nodes.
@@ -231,24 +259,12 @@ struct ResultsWriter::Impl {
     };
     for (std::size_t k = 0; k < layout.centerline_points.size(); ++k) {
       const int p = layout.centerline_points[k];
-      write_ints("/xdmf/polyline" + std::to_string(k), indices(p), {1, static_cast<hsize_t>(p)});
+      write_ints("/xdmf/polyline" + std::to_string(k), indices(p), {1, static_cast<hsize_t>(p)},
+                 "point indices 0 ... P-1 of beam " + std::to_string(k) + "'s polyline in the XDMF sidecar");
     }
     if (layout.node_count > 0)
-      write_ints("/xdmf/polyvertex", indices(layout.node_count), {static_cast<hsize_t>(layout.node_count)});
-  }
-
-  /// Writes a scalar attribute on `object`, replacing one of the same name.
-  void set_attribute(hid_t object, const std::string& name, hid_t type, const void* value, const std::string& function) {
-    if (H5Aexists(object, name.c_str()) > 0) check(H5Adelete(object, name.c_str()), "replace attribute " + name, function);
-    const Hid space(H5Screate(H5S_SCALAR), H5Sclose);
-    const Hid attribute(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    check(attribute.valid() ? H5Awrite(attribute, type, value) : -1, "write attribute " + name, function);
-  }
-
-  void set_attribute(hid_t object, const std::string& name, const std::string& value, const std::string& function) {
-    const Hid type(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(type, value.size() + 1);
-    set_attribute(object, name, type, value.c_str(), function);
+      write_ints("/xdmf/polyvertex", indices(layout.node_count), {static_cast<hsize_t>(layout.node_count)},
+                 "point indices 0 ... n-1 of the nodes' point cloud in the XDMF sidecar");
   }
 
   /// Appends the buffered steps to every dataset.
@@ -318,13 +334,27 @@ struct ResultsWriter::Impl {
     if (lambda_size != m)
       size_error("multipliers", lambda_size, std::to_string(m) + " (layout.multiplier_count)",
                  "pass the multiplier vector of the constraints, or fix layout.multiplier_count");
-    if (step.scalars.size() != layout.scalar_names.size())
-      size_error("scalars", step.scalars.size(), std::to_string(layout.scalar_names.size()) + " (layout.scalar_names)",
-                 "pass one value per scalar name, in the same order");
-    if (step.probes.size() != layout.probe_names.size())
-      size_error("probes", step.probes.size(), std::to_string(layout.probe_names.size()) + " (layout.probe_names)",
-                 "pass one point per probe name, in the same order");
+    if (step.scalars.size() != layout.scalars.size())
+      size_error("scalars", step.scalars.size(), std::to_string(layout.scalars.size()) + " (layout.scalars)",
+                 "pass one value per layout scalar, in the same order");
+    if (step.probes.size() != layout.probes.size())
+      size_error("probes", step.probes.size(), std::to_string(layout.probes.size()) + " (layout.probes)",
+                 "pass one point per layout probe, in the same order");
+    check_counters(step);
     check_centerlines(step);
+  }
+
+  /// The values of integer scalars are whole numbers that fit in 32 bits.
+  void check_counters(const ResultsStep& step) const {
+    for (std::size_t i = 0; i < step.scalars.size(); ++i) {
+      const double value = step.scalars[i];
+      if (layout.scalars[i].integer &&
+          !(value == std::trunc(value) && std::abs(value) <= std::numeric_limits<std::int32_t>::max()))
+        throw Error("step.scalars[" + std::to_string(i) + "] = " + format_double(value) + " for the integer scalar " +
+                        layout.scalars[i].name + " is not a whole number of 32 bits",
+                    where("append") + " at step " + std::to_string(appended),
+                    "pass the counter's value, or declare the scalar without `integer`");
+    }
   }
 
   void check_centerlines(const ResultsStep& step) const {
@@ -387,7 +417,8 @@ ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, i
   try {
     for (Series& s : impl.series) impl.create_dataset(s);
     impl.write_topologies();
-    impl.set_attribute(impl.file, "schema", "spar.results/1", "ResultsWriter");
+    impl.check(detail::write_string_attribute(impl.file, "schema", "spar.results/2"), "write attribute schema",
+               "ResultsWriter");
     impl.sidecar = std::make_unique<detail::XdmfSidecar>(
         impl.xdmf_path, std::filesystem::path(h5_path).filename().string(), impl.layout);
     flush();
@@ -416,17 +447,26 @@ ResultsWriter& ResultsWriter::operator=(ResultsWriter&& other) noexcept {
 
 void ResultsWriter::write_attribute(const std::string& name, double value) {
   impl_->require_open("write_attribute");
-  impl_->set_attribute(impl_->file, name, H5T_NATIVE_DOUBLE, &value, "write_attribute");
+  impl_->check(detail::write_scalar_attribute(impl_->file, name, H5T_NATIVE_DOUBLE, &value), "write attribute " + name,
+               "write_attribute");
+  impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
+}
+
+void ResultsWriter::write_attribute(const std::string& name, std::int64_t value) {
+  impl_->require_open("write_attribute");
+  impl_->check(detail::write_scalar_attribute(impl_->file, name, H5T_NATIVE_INT64, &value), "write attribute " + name,
+               "write_attribute");
   impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
 }
 
 void ResultsWriter::write_attribute(const std::string& name, const std::string& value) {
   impl_->require_open("write_attribute");
-  impl_->set_attribute(impl_->file, name, value, "write_attribute");
+  impl_->check(detail::write_string_attribute(impl_->file, name, value), "write attribute " + name, "write_attribute");
   impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
 }
 
-void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixXd& data) {
+void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
+                                   const std::string& description) {
   Impl& impl = *impl_;
   impl.require_open("write_constant");
   if (H5Lexists(impl.file, name.c_str(), H5P_DEFAULT) > 0)
@@ -439,6 +479,7 @@ void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixX
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = data;
   impl.check(set.valid() ? H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data()) : -1,
              "write dataset " + name, "write_constant");
+  impl.check(detail::describe_dataset(set, unit, description), "describe dataset " + name, "write_constant");
   impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "write_constant");
 }
 

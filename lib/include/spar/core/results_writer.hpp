@@ -11,11 +11,23 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace spar::core {
+
+/// A per-step quantity: its dataset name, its unit and its meaning, stored with the dataset as
+/// its `units` and `description` attributes.
+struct ResultsQuantity {
+  std::string name;         ///< dataset name, e.g. kinetic_energy (no '/')
+  std::string unit;         ///< SI unit, e.g. "J", "m/s", "rad"; "1" for ratios and counts
+  std::string description;  ///< what it is, e.g. "kinetic energy of the rods and the slider"
+  /// Stored as 32-bit integers (counters such as newton_iterations); every value appended must
+  /// then be a whole number. Scalars only.
+  bool integer = false;
+};
 
 /// What every step of a run holds; fixed when the file is created.
 struct ResultsLayout {
@@ -26,11 +38,11 @@ struct ResultsLayout {
   bool velocities = true;
   /// Lagrange multipliers λ per step (0: none).
   int multiplier_count = 0;
-  /// Per-step scalars, e.g. kinetic_energy, strain_energy, total_energy, constraint_residual,
-  /// newton_iterations, factorizations, step_size.
-  std::vector<std::string> scalar_names;
-  /// Per-step 3-vectors, e.g. a material point's position.
-  std::vector<std::string> probe_names;
+  /// Per-step scalars, e.g. {"kinetic_energy", "J", "kinetic energy of the rods"},
+  /// {"newton_iterations", "1", "Newton iterations of the step", true}.
+  std::vector<ResultsQuantity> scalars;
+  /// Per-step 3-vectors, e.g. a material point's position in m.
+  std::vector<ResultsQuantity> probes;
   /// Per beam, the number of centerline points sampled at every step (≥ 2; the XDMF polylines).
   std::vector<int> centerline_points;
 };
@@ -41,8 +53,8 @@ struct ResultsStep {
   const Configuration* configuration = nullptr;   ///< node_count nodes, or nullptr if node_count = 0
   const Eigen::VectorXd* velocity = nullptr;      ///< 6 per node, or nullptr if the layout has none
   const Eigen::VectorXd* multipliers = nullptr;   ///< multiplier_count entries, or nullptr if 0
-  std::vector<double> scalars;                    ///< in scalar_names order
-  std::vector<Eigen::Vector3d> probes;            ///< in probe_names order
+  std::vector<double> scalars;                    ///< in layout.scalars order
+  std::vector<Eigen::Vector3d> probes;            ///< in layout.probes order
   std::vector<Eigen::MatrixXd> centerlines;       ///< per beam, centerline_points[k] × 3
 };
 
@@ -62,13 +74,18 @@ public:
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
 
-  /// Run metadata: a scalar attribute of the root group (replaced if it exists), flushed at once.
+  /// Run metadata: a scalar attribute of the root group (replaced if it exists), flushed at once:
+  /// a double, a 64-bit integer (counters such as steps or factorizations) or a variable-length
+  /// UTF-8 string (h5py reads str). State the unit in the name or in docs/output.md.
   void write_attribute(const std::string& name, double value);
+  void write_attribute(const std::string& name, std::int64_t value);
+  void write_attribute(const std::string& name, int value) { write_attribute(name, std::int64_t{value}); }
   void write_attribute(const std::string& name, const std::string& value);
-  /// A constant dataset `name` (rows × cols, row-major; a column vector is stored 1-D), e.g. the
-  /// reference geometry or the solver counters at the end; groups in `name` are created. Throws
-  /// spar::Error if `name` already exists (every time-history name is taken from the start).
-  void write_constant(const std::string& name, const Eigen::MatrixXd& data);
+  /// A constant dataset `name` (rows × cols, row-major; a column vector is stored 1-D) with its
+  /// `units` and `description`, e.g. the reference geometry; groups in `name` are created.
+  /// Throws spar::Error if `name` already exists (every time-history name is taken from the start).
+  void write_constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
+                      const std::string& description);
   /// Buffers one step after checking it against the layout (spar::Error naming the field and the
   /// expected size) and that time increases; writes the block when flush_every steps are buffered.
   void append(const ResultsStep& step);
