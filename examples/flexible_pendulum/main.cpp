@@ -23,6 +23,7 @@
 #include <spar/spar.hpp>
 #include <spar/joints/joints.hpp>
 
+#include <centerline_fields.hpp>
 #include <cli.hpp>
 
 #include <algorithm>
@@ -106,6 +107,7 @@ int main(int argc, char** argv) try {
   // 5. Integrate and record.
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
+  const Eigen::MatrixXd arc_length = examples::reference_arc_length(rod, model.reference(), samples);
   core::ResultsWriter results(out + "/flexible_pendulum.h5",
                               {.node_count = model.node_count(),
                                .multiplier_count = integrator.multiplier_count(),
@@ -130,7 +132,8 @@ int main(int argc, char** argv) try {
                                             .integer = true}},
                                .probes = {{.name = "tip", .unit = "m",
                                            .description = "the rule's free end x(u = 1), inertial frame"}},
-                               .centerline_points = {samples}});
+                               .centerline_points = {samples},
+                               .centerline_fields = examples::centerline_field_layout()});
   results.write_attribute("example", "flexible_pendulum");
   results.write_attribute("time_step", h);
   results.write_attribute("rho_infinity", rho_infinity);
@@ -157,7 +160,8 @@ int main(int argc, char** argv) try {
                     .scalars = {energy.kinetic, energy.strain, energy.gravity, energy.total(), drift,
                                 deflection, residual, static_cast<double>(integrator.last_step_iterations())},
                     .probes = {tip},
-                    .centerlines = {rod.sample_centerline(q, samples)}});
+                    .centerlines = {rod.sample_centerline(q, samples)},
+                    .centerline_fields = {examples::centerline_fields(rod, arc_length, q, integrator.velocity())}});
   };
   record();
   core::ProgressBar progress(t_end, "flexible_pendulum");

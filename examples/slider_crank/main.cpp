@@ -20,6 +20,7 @@
 #include <spar/spar.hpp>
 #include <spar/joints/joints.hpp>
 
+#include <centerline_fields.hpp>
 #include <cli.hpp>
 
 #include "slider_crank_model.hpp"
@@ -69,6 +70,9 @@ int main(int argc, char** argv) try {
   integrator.initialize();
 
   std::filesystem::create_directories(out);
+  const int samples = 10 * elements + 1;  // centerline points per rod in the results file
+  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank, model.reference(), samples);
+  const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler, model.reference(), samples);
   core::ResultsWriter results(out + "/slider_crank.h5",
                               {.node_count = model.node_count(),
                                .multiplier_count = integrator.multiplier_count(),
@@ -96,7 +100,8 @@ int main(int argc, char** argv) try {
                                            .description = "Rod II's midpoint x(u = 1/2), inertial frame"},
                                           {.name = "rod1_tip", .unit = "m",
                                            .description = "Rod I's tip (its last node), inertial frame"}},
-                               .centerline_points = {10 * elements + 1, 10 * elements + 1}});
+                               .centerline_points = {samples, samples},
+                               .centerline_fields = examples::centerline_field_layout()});
   results.write_attribute("example", "slider_crank (003 section 5.1)");
   results.write_attribute("time_step", h);
   results.write_attribute("strategy", strategy);
@@ -129,8 +134,10 @@ int main(int argc, char** argv) try {
                     .scalars = {rate, speed, q.position[slider].x(), energy.kinetic, energy.strain,
                                 energy.gravity, residual, static_cast<double>(integrator.last_step_iterations())},
                     .probes = {midpoint, q.position[crank_tip]},
-                    .centerlines = {crank.sample_centerline(q, 10 * elements + 1),
-                                    coupler.sample_centerline(q, 10 * elements + 1)}});
+                    .centerlines = {crank.sample_centerline(q, samples), coupler.sample_centerline(q, samples)},
+                    .centerline_fields = {
+                        examples::centerline_fields(crank, crank_arc_length, q, integrator.velocity()),
+                        examples::centerline_fields(coupler, coupler_arc_length, q, integrator.velocity())}});
   };
   record();
   core::ProgressBar progress(t_end, "slider_crank");

@@ -128,6 +128,18 @@ void check_layout(const ResultsLayout& layout, int flush_every, const std::strin
       throw Error("layout.centerline_points[" + std::to_string(k) + "] = " + std::to_string(layout.centerline_points[k]) +
                       " is below 2",
                   where, "sample each beam's centerline at 2 points or more (e.g. 10 per element + 1)");
+  std::set<std::string> fields;
+  for (const CenterlineField& field : layout.centerline_fields) {
+    check_quantity({.name = field.name, .unit = field.unit, .description = field.description}, "centerline_fields",
+                   fields, where);
+    if (field.name.find_first_of(":|") != std::string::npos)
+      throw Error("layout.centerline_fields entry \"" + field.name + "\" contains ':' or '|'", where,
+                  "name the field without the characters XDMF references reserve, e.g. axial_strain");
+    if (field.components != 1 && field.components != 3)
+      throw Error("layout.centerline_fields entry \"" + field.name + "\" has " + std::to_string(field.components) +
+                      " components",
+                  where, "give a scalar (1 component) or a vector (3 components) per point");
+  }
 }
 
 /// `path` with its extension replaced by `.xmf`.
@@ -146,6 +158,7 @@ struct ResultsWriter::Impl {
   std::vector<Series> series;  ///< /time first; the others in append order
   int positions = -1, quaternions = -1, velocities = -1, multipliers = -1;
   int first_scalar = 0, first_probe = 0, first_centerline = 0;
+  int first_field = 0;  ///< field f of beam k is series first_field + f × beams + k
   double last_time = 0;        ///< the last appended step's time
   std::unique_ptr<detail::XdmfSidecar> sidecar;
   int appended = 0;
@@ -202,6 +215,14 @@ struct ResultsWriter::Impl {
                  "beam " + std::to_string(k) +
                      "'s centerline (inertial frame) at points equally spaced in its knot parameter, root to tip",
                  {static_cast<hsize_t>(layout.centerline_points[k]), 3});
+    first_field = static_cast<int>(series.size());
+    for (const CenterlineField& field : layout.centerline_fields)
+      for (std::size_t k = 0; k < layout.centerline_points.size(); ++k) {
+        std::vector<hsize_t> shape{static_cast<hsize_t>(layout.centerline_points[k])};
+        if (field.components > 1) shape.push_back(static_cast<hsize_t>(field.components));
+        add_series("/centerline_fields/" + field.name + "/beam" + std::to_string(k), field.unit,
+                   field.description + " (beam " + std::to_string(k) + ", at its centerline points)", shape);
+      }
   }
 
   void create_file() {
@@ -370,6 +391,32 @@ struct ResultsWriter::Impl {
                        "] rows of x, y, z), got " + std::to_string(c.rows()) + " × " + std::to_string(c.cols()),
                    "sample the beam at the layout's number of points");
     }
+    check_centerline_fields(step);
+  }
+
+  void check_centerline_fields(const ResultsStep& step) const {
+    const std::vector<CenterlineField>& fields = layout.centerline_fields;
+    const std::size_t beams = fields.empty() ? 0 : layout.centerline_points.size();
+    if (step.centerline_fields.size() != beams)
+      size_error("centerline_fields", step.centerline_fields.size(),
+                 fields.empty() ? std::string("none (layout.centerline_fields is empty)")
+                                : std::to_string(beams) + " beams (layout.centerline_points)",
+                 "pass per beam one matrix per layout.centerline_fields entry");
+    for (std::size_t k = 0; k < beams; ++k) {
+      const std::string entry = "centerline_fields[" + std::to_string(k) + "]";
+      if (step.centerline_fields[k].size() != fields.size())
+        size_error(entry, step.centerline_fields[k].size(), std::to_string(fields.size()) + " (layout.centerline_fields)",
+                   "pass one matrix per field, in the layout's order");
+      for (std::size_t f = 0; f < fields.size(); ++f) {
+        const Eigen::MatrixXd& values = step.centerline_fields[k][f];
+        if (values.rows() != layout.centerline_points[k] || values.cols() != fields[f].components)
+          size_error(entry + "[" + std::to_string(f) + "] (" + fields[f].name + ")", static_cast<std::size_t>(values.size()),
+                     std::to_string(layout.centerline_points[k]) + " × " + std::to_string(fields[f].components) +
+                         " (a row per centerline point), got " + std::to_string(values.rows()) + " × " +
+                         std::to_string(values.cols()),
+                     "sample the field at the beam's centerline points");
+      }
+    }
   }
 
   void buffer_nodes(const ResultsStep& step) {
@@ -400,6 +447,12 @@ struct ResultsWriter::Impl {
       const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rows = step.centerlines[k];
       series[static_cast<std::size_t>(first_centerline) + k].push(rows.data(), static_cast<std::size_t>(rows.size()));
     }
+    for (std::size_t k = 0; k < step.centerline_fields.size(); ++k)
+      for (std::size_t f = 0; f < step.centerline_fields[k].size(); ++f) {
+        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = step.centerline_fields[k][f];
+        series[static_cast<std::size_t>(first_field) + f * step.centerline_fields.size() + k].push(
+            rows.data(), static_cast<std::size_t>(rows.size()));
+      }
     last_time = step.time;
   }
 };

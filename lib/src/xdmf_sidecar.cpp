@@ -117,11 +117,22 @@ std::string XdmfSidecar::step_grid(int step, double time, int rows) const {
 std::string XdmfSidecar::beam_grid(int step, std::size_t beam, int rows) const {
   const int p = layout_.centerline_points[beam];
   const std::string k = std::to_string(beam), points = std::to_string(p);
-  return "    <Grid Name=\"beam" + k + "\" GridType=\"Uniform\">\n" +
-         "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"1\" NodesPerElement=\"" + points + "\">\n" +
-         "      <DataItem Dimensions=\"1 " + points + "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + h5_name_ +
-         ":/xdmf/polyline" + k + "</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
-         step_item("/centerlines/beam" + k, step, rows, {p, 3}, 3, "      ") + "     </Geometry>\n    </Grid>\n";
+  std::string grid =
+      "    <Grid Name=\"beam" + k + "\" GridType=\"Uniform\">\n" +
+      "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"1\" NodesPerElement=\"" + points + "\">\n" +
+      "      <DataItem Dimensions=\"1 " + points + "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + h5_name_ +
+      ":/xdmf/polyline" + k + "</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
+      step_item("/centerlines/beam" + k, step, rows, {p, 3}, 3, "      ") + "     </Geometry>\n";
+  for (const CenterlineField& field : layout_.centerline_fields) {
+    const bool vector = field.components > 1;
+    const std::vector<int> shape = vector ? std::vector<int>{p, field.components} : std::vector<int>{p};
+    grid += "     <Attribute Name=\"" + xml_escape(field.name) + "\" AttributeType=\"" + (vector ? "Vector" : "Scalar") +
+            "\" Center=\"Node\">\n" +
+            step_item("/centerline_fields/" + xml_escape(field.name) + "/beam" + k, step, rows, shape, shape.back(),
+                      "      ") +
+            "     </Attribute>\n";
+  }
+  return grid + "    </Grid>\n";
 }
 
 std::string XdmfSidecar::nodes_grid(int step, int rows) const {

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Shared by the output tests: a small deterministic run (3 nodes, 2 multipliers, 2 scalars,
-/// 1 probe, 2 beams), a scratch folder, and readers for what ResultsWriter wrote.
+/// 1 probe, 2 beams with 2 centerline fields), a scratch folder, and readers for what
+/// ResultsWriter wrote.
 
 #include <spar/core/configuration.hpp>
 #include <spar/core/results_writer.hpp>
@@ -48,6 +49,8 @@ inline core::ResultsLayout sample_layout() {
                     {.name = "newton_iterations", .unit = "1", .description = "Newton iterations", .integer = true}};
   layout.probes = {{.name = "tip", .unit = "m", .description = "tip position"}};
   layout.centerline_points = {4, 5};
+  layout.centerline_fields = {{.name = "arc_length", .unit = "m", .description = "arc length"},
+                              {.name = "velocity", .unit = "m/s", .description = "velocity", .components = 3}};
   return layout;
 }
 
@@ -76,6 +79,8 @@ struct SampleStep {
       Eigen::MatrixXd centerline(points, 3);
       for (int p = 0; p < points; ++p) centerline.row(p) << p, k * 0.1 * p, points + 10.0 * k;
       step.centerlines.push_back(centerline);
+      const Eigen::MatrixXd arc_length = Eigen::VectorXd::LinSpaced(points, 0.0, 1.0);
+      step.centerline_fields.push_back({arc_length, -centerline - Eigen::MatrixXd::Constant(points, 3, k)});
     }
   }
 };

@@ -54,6 +54,18 @@ void check_round_trip(const ReadOnlyFile& file, int steps) {
         for (int c = 0; c < 3; ++c)
           CHECK(centerline.values[(s * static_cast<std::size_t>(expected.rows()) + static_cast<std::size_t>(p)) * 3 +
                                   static_cast<std::size_t>(c)] == expected(p, c));
+      const std::string k = std::to_string(beam);
+      const DatasetContents arc_length = file.read("/centerline_fields/arc_length/beam" + k),
+                            velocity = file.read("/centerline_fields/velocity/beam" + k);
+      const auto P = static_cast<std::size_t>(expected.rows());
+      REQUIRE(arc_length.shape == std::vector<hsize_t>{S, P});
+      REQUIRE(velocity.shape == std::vector<hsize_t>{S, P, 3});
+      for (std::size_t p = 0; p < P; ++p) {
+        CHECK(arc_length.values[s * P + p] == sample.step.centerline_fields[beam][0](static_cast<int>(p), 0));
+        for (std::size_t c = 0; c < 3; ++c)
+          CHECK(velocity.values[(s * P + p) * 3 + c] ==
+                sample.step.centerline_fields[beam][1](static_cast<int>(p), static_cast<int>(c)));
+      }
     }
   }
 }
@@ -112,7 +124,8 @@ TEST_CASE("ResultsWriter writes only the datasets of its layout", "[output]") {
   const ReadOnlyFile file(path);
   CHECK(file.read("/time").values == std::vector<double>{0, 1, 2, 3});
   CHECK(file.read("/scalars/total_energy").values == std::vector<double>{0, 10, 20, 30});
-  for (const char* absent : {"/positions", "/quaternions", "/velocities", "/multipliers", "/probes", "/centerlines"})
+  for (const char* absent :
+       {"/positions", "/quaternions", "/velocities", "/multipliers", "/probes", "/centerlines", "/centerline_fields"})
     CHECK_FALSE(file.has(absent));
 }
 
@@ -156,6 +169,15 @@ TEST_CASE("ResultsWriter rejects steps that do not match the layout", "[output]"
     step.centerlines.pop_back();
     CHECK_THROWS_WITH(writer.append(step), Contains("step.centerlines has 1 entries, expected 2 beams"));
   }
+  SECTION("centerline fields") {
+    step.centerline_fields[1][1] = Eigen::MatrixXd::Zero(5, 1);
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerline_fields[1][1] (velocity)") && Contains("5 × 3") &&
+                                               Contains("got 5 × 1"));
+    step.centerline_fields[1].pop_back();
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerline_fields[1] has 1 entries, expected 2"));
+    step.centerline_fields.clear();
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerline_fields has 0 entries, expected 2 beams"));
+  }
   SECTION("time") {
     step.time = SampleStep(0).step.time;
     CHECK_THROWS_WITH(writer.append(step), Contains("step.time") && Contains("not after the previous step"));
@@ -194,6 +216,12 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
     layout = spar::test::sample_layout();
     layout.probes[0].integer = true;
     CHECK_THROWS_WITH(ResultsWriter(folder.file("g.h5"), layout), Contains("\"tip\" is marked integer"));
+    layout = spar::test::sample_layout();
+    layout.centerline_fields[1].components = 2;
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("h.h5"), layout), Contains("\"velocity\" has 2 components"));
+    layout = spar::test::sample_layout();
+    layout.centerline_fields[0].name = "s|t";
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("i.h5"), layout), Contains("\"s|t\" contains ':' or '|'"));
     CHECK_THROWS_WITH(ResultsWriter(folder.file("d.h5"), spar::test::sample_layout(), 0), Contains("flush_every = 0"));
   }
   SECTION("names taken and a closed file") {
@@ -239,7 +267,8 @@ TEST_CASE("Every dataset states its units and meaning; strings are UTF-8; counte
   CHECK(file.integer_attribute("steps") == 3'000'000'000);
 
   const std::vector<std::string> datasets = file.datasets();
-  CHECK(datasets.size() == 15);  // time, 4 node series, 2 scalars, 1 probe, 2 beams, 3 topologies, 1 constant
+  // time, 4 node series, 2 scalars, 1 probe, 2 beams × (centerline, 2 fields), 3 topologies, 1 constant
+  CHECK(datasets.size() == 19);
   for (const std::string& name : datasets) {
     INFO("dataset " << name);
     for (const char* key : {"units", "description"}) {

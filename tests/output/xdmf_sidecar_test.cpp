@@ -99,6 +99,15 @@ TEST_CASE("The XDMF sidecar is well-formed XML and describes every flushed step"
       CHECK(grid.one("Geometry").one("DataItem").text == "run.h5:/centerlines/beam" + std::to_string(beam) + "|" +
                                                              std::to_string(k) + " 0 0:1 1 1:1 " + points + " 3:" +
                                                              (k < 3 ? "3 " : "4 ") + points + " 3");
+      const auto fields = grid.all("Attribute");
+      REQUIRE(fields.size() == 2);
+      CHECK(fields[0]->attribute("Name") == "arc_length");
+      CHECK(fields[0]->attribute("AttributeType") == "Scalar");
+      CHECK(fields[0]->attribute("Center") == "Node");
+      CHECK(fields[0]->one("DataItem").attribute("Dimensions") == points);
+      CHECK(fields[1]->attribute("Name") == "velocity");
+      CHECK(fields[1]->attribute("AttributeType") == "Vector");
+      CHECK(fields[1]->one("DataItem").attribute("Dimensions") == points + " 3");
     }
     CHECK(grids[2]->attribute("Name") == "nodes");
     CHECK(grids[2]->one("Attribute").attribute("Name") == "velocity");
@@ -109,8 +118,8 @@ TEST_CASE("The XDMF sidecar is well-formed XML and describes every flushed step"
   const ReadOnlyFile file(path);
   const XmlElement closed = spar::test::XmlReader::parse(spar::test::read_text(writer.xdmf_path()));
   CHECK(closed.one("Domain").one("Grid").all("Grid").size() == 4);
-  // Per step: 2 beams × (polyline, centerline) + nodes (polyvertex, positions, velocities).
-  CHECK(check_heavy_data(closed, file) == 4 * 7);
+  // Per step: 2 beams × (polyline, centerline, 2 fields) + nodes (polyvertex, positions, velocities).
+  CHECK(check_heavy_data(closed, file) == 4 * 11);
 }
 
 namespace {

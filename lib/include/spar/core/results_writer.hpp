@@ -29,6 +29,16 @@ struct ResultsQuantity {
   bool integer = false;
 };
 
+/// A quantity sampled at every centerline point of every beam, e.g. the velocity or the arc
+/// length: stored per step beside the centerlines and shown by the XDMF sidecar as point data of
+/// the beams, so ParaView can colour them by it.
+struct CenterlineField {
+  std::string name;         ///< dataset and ParaView array name, e.g. velocity (no '/')
+  std::string unit;         ///< SI unit, e.g. "m/s"; "1" for ratios
+  std::string description;  ///< what it is
+  int components = 1;       ///< 1 (a scalar per point) or 3 (a vector per point, inertial frame)
+};
+
 /// What every step of a run holds; fixed when the file is created.
 struct ResultsLayout {
   /// Nodes of the configuration: positions n×3, rotations as unit quaternions n×4
@@ -45,6 +55,8 @@ struct ResultsLayout {
   std::vector<ResultsQuantity> probes;
   /// Per beam, the number of centerline points sampled at every step (≥ 2; the XDMF polylines).
   std::vector<int> centerline_points;
+  /// Point data of every beam's centerline points (none: the beams are bare polylines).
+  std::vector<CenterlineField> centerline_fields;
 };
 
 /// One step's data, borrowed for the duration of ResultsWriter::append.
@@ -56,6 +68,9 @@ struct ResultsStep {
   std::vector<double> scalars;                    ///< in layout.scalars order
   std::vector<Eigen::Vector3d> probes;            ///< in layout.probes order
   std::vector<Eigen::MatrixXd> centerlines;       ///< per beam, centerline_points[k] × 3
+  /// Per beam, one matrix per layout.centerline_fields entry (in its order): centerline_points[k]
+  /// rows of `components` values, one row per centerline point; empty if the layout has none.
+  std::vector<std::vector<Eigen::MatrixXd>> centerline_fields;
 };
 
 /// Writes a run's time histories into `<name>.h5` and its XDMF sidecar `<name>.xmf`.
