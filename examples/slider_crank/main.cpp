@@ -92,7 +92,8 @@ int main(int argc, char** argv) try {
                                             .description = "potential of gravity, -sum m g . x (zero at the origin)"},
                                            {.name = "constraint_residual", .unit = "m",
                                             .description = "largest constraint violation |Phi|_inf after the step "
-                                                           "(position rows in m, the slider's rotation rows in rad)"},
+                                                           "(position rows in m; the slider's rotation-lock rows "
+                                                           "are dot products, about rad)"},
                                            {.name = "newton_iterations", .unit = "1",
                                             .description = "Newton iterations (linear solves) of the step",
                                             .integer = true}},
