@@ -14,8 +14,8 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <limits>
 #include <filesystem>
+#include <limits>
 #include <set>
 #include <utility>
 

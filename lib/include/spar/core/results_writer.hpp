@@ -33,7 +33,7 @@ struct ResultsQuantity {
 /// length: stored per step beside the centerlines and shown by the XDMF sidecar as point data of
 /// the beams, so ParaView can colour them by it.
 struct CenterlineField {
-  std::string name;         ///< dataset and ParaView array name, e.g. velocity (no '/')
+  std::string name;         ///< dataset and ParaView array name, e.g. velocity (no '/', ':', '|')
   std::string unit;         ///< SI unit, e.g. "m/s"; "1" for ratios
   std::string description;  ///< what it is
   int components = 1;       ///< 1 (a scalar per point) or 3 (a vector per point, inertial frame)
@@ -48,8 +48,9 @@ struct ResultsLayout {
   bool velocities = true;
   /// Lagrange multipliers λ per step (0: none).
   int multiplier_count = 0;
-  /// Per-step scalars, e.g. {"kinetic_energy", "J", "kinetic energy of the rods"},
-  /// {"newton_iterations", "1", "Newton iterations of the step", true}.
+  /// Per-step scalars, e.g. {.name = "kinetic_energy", .unit = "J", .description = "kinetic
+  /// energy of the rods"}, {.name = "newton_iterations", .unit = "1", .description = "Newton
+  /// iterations of the step", .integer = true}.
   std::vector<ResultsQuantity> scalars;
   /// Per-step 3-vectors, e.g. a material point's position in m.
   std::vector<ResultsQuantity> probes;
