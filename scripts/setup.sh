@@ -2,6 +2,9 @@
 # Installs what spar needs from Debian's packages. Idempotent: when everything is present it
 # changes nothing and touches no network; otherwise it runs `apt-get update` once and installs
 # the missing packages. Needs root (or sudo) only when something is missing.
+#   scripts/setup.sh          what building and running spar needs (scripts/run.sh)
+#   scripts/setup.sh --test   and what the tests need besides (scripts/test.sh): ParaView's
+#                             pvpython under a virtual X server, which opens an example's results
 set -euo pipefail
 
 packages=(
@@ -13,6 +16,15 @@ packages=(
   libbenchmark-dev          # bench/
   python3 python3-matplotlib  # the examples' plot scripts
 )
+case "${1:-}" in
+  "") ;;
+  --test)
+    packages+=(
+      paraview python3-paraview  # ParaView and its pvpython (the results-file test, label paraview)
+      xvfb xauth                 # xvfb-run: a virtual X server for pvpython's rendering
+    ) ;;
+  *) echo "setup: unknown option '$1' (use --test or nothing)" >&2; exit 2 ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do

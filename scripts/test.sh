@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # The test command: sets up, builds and runs every test.
-#   1. install the Debian packages (scripts/setup.sh),
+#   1. install the Debian packages, with those of the tests (scripts/setup.sh --test: ParaView),
 #   2. Release build of everything (library, tests, examples, benchmarks), all CTest tests,
 #   3. AddressSanitizer + UndefinedBehaviorSanitizer build of the unit tests, run under them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
 
-scripts/setup.sh
+scripts/setup.sh --test
 
 echo "== release build"
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release

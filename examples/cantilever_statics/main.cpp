@@ -127,12 +127,13 @@ int main(int argc, char** argv) try {
   core::Hdf5File h5(out + "/cantilever_statics.h5");
   h5.write_attribute("case", load_case);
   h5.write_attribute("load", load);
-  h5.write("centerline/deformed", centerline);
-  h5.write("centerline/reference", undeformed);
+  h5.write("centerline/deformed", centerline, "m",
+           "deformed centerline at 10 points per element + 1, equally spaced in the knot parameter");
+  h5.write("centerline/reference", undeformed, "m", "the same parameters on the reference (straight) centerline");
   Eigen::MatrixXd control_points(beam.control_point_count(), 3);
   for (int I = 0; I < beam.control_point_count(); ++I)
     control_points.row(I) = model.state().position[beam.node(I)].transpose();
-  h5.write("control_points", control_points);
+  h5.write("control_points", control_points, "m", "deformed control points (the beam's nodes), root to tip");
 
   // 7. Report.
   std::printf("%s, load %.6g, p = %d, %d elements: tip (%.9f, %.9f, %.9f) m, reference "

@@ -23,6 +23,7 @@
 #include <spar/spar.hpp>
 #include <spar/joints/joints.hpp>
 
+#include <centerline_fields.hpp>
 #include <cli.hpp>
 
 #include <algorithm>
@@ -106,14 +107,33 @@ int main(int argc, char** argv) try {
   // 5. Integrate and record.
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
+  const Eigen::MatrixXd arc_length = examples::reference_arc_length(rod, model.reference(), samples);
   core::ResultsWriter results(out + "/flexible_pendulum.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
-                               .scalar_names = {"kinetic_energy", "strain_energy", "gravity_potential",
-                                                "total_energy", "energy_drift", "chord_deflection",
-                                                "constraint_residual", "newton_iterations"},
-                               .probe_names = {"tip"},
-                               .centerline_points = {samples}});
+                               .scalars = {{.name = "kinetic_energy", .unit = "J",
+                                            .description = "kinetic energy of the rule"},
+                                           {.name = "strain_energy", .unit = "J",
+                                            .description = "strain energy of the rule"},
+                                           {.name = "gravity_potential", .unit = "J",
+                                            .description = "potential of gravity, -sum m g . x (zero at the pin)"},
+                                           {.name = "total_energy", .unit = "J",
+                                            .description = "kinetic + strain energy + gravity potential"},
+                                           {.name = "energy_drift", .unit = "1",
+                                            .description = "(E - E(0)) / (m g L / 2): total energy drift over the "
+                                                           "energy released by the swing, a fraction"},
+                                           {.name = "chord_deflection", .unit = "1",
+                                            .description = "largest distance of the rule from its chord (21 points) "
+                                                           "over its length L, a fraction (0.028 = 2.8 %)"},
+                                           {.name = "constraint_residual", .unit = "m",
+                                            .description = "largest violation |Phi|_inf of the pin after the step"},
+                                           {.name = "newton_iterations", .unit = "1",
+                                            .description = "Newton iterations (linear solves) of the step",
+                                            .integer = true}},
+                               .probes = {{.name = "tip", .unit = "m",
+                                           .description = "the rule's free end x(u = 1), inertial frame"}},
+                               .centerline_points = {samples},
+                               .centerline_fields = examples::centerline_field_layout()});
   results.write_attribute("example", "flexible_pendulum");
   results.write_attribute("time_step", h);
   results.write_attribute("rho_infinity", rho_infinity);
@@ -140,7 +160,8 @@ int main(int argc, char** argv) try {
                     .scalars = {energy.kinetic, energy.strain, energy.gravity, energy.total(), drift,
                                 deflection, residual, static_cast<double>(integrator.last_step_iterations())},
                     .probes = {tip},
-                    .centerlines = {rod.sample_centerline(q, samples)}});
+                    .centerlines = {rod.sample_centerline(q, samples)},
+                    .centerline_fields = {examples::centerline_fields(rod, arc_length, q, integrator.velocity())}});
   };
   record();
   core::ProgressBar progress(t_end, "flexible_pendulum");
@@ -151,6 +172,11 @@ int main(int argc, char** argv) try {
   }
   progress.finish();
   const solvers::DynamicCounters& counters = integrator.counters();
+  results.write_attribute("t_end", integrator.time());
+  results.write_attribute("steps", counters.steps);
+  results.write_attribute("newton_iterations", counters.newton_iterations);
+  results.write_attribute("factorizations", counters.factorizations);
+  results.write_attribute("cutbacks", counters.cutbacks);
   results.close();
 
   // 6. Report.

@@ -35,7 +35,7 @@ ax.set_title("tip trajectory")
 ax.legend(fontsize=8)
 
 ax = axes[0][1]
-ax.plot(t, [100 * d for d in column("chord_deflection")], color="C1")
+ax.plot(t, [100 * d for d in column("chord_deflection")], color="C1")  # stored as a fraction, shown in %
 ax.set_xlabel("t [s]")
 ax.set_ylabel("max distance from the chord / L [%]")
 ax.set_title("bending of the rod")

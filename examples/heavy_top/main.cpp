@@ -83,10 +83,23 @@ int main(int argc, char** argv) try {
   core::ResultsWriter results(out + "/heavy_top.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
-                               .scalar_names = {"kinetic_energy", "gravity_potential", "total_energy",
-                                                "rotation_error", "position_error", "constraint_residual",
-                                                "newton_iterations"},
-                               .probe_names = {"reference_center_of_mass"}});
+                               .scalars = {{.name = "kinetic_energy", .unit = "J",
+                                            .description = "kinetic energy of the top"},
+                                           {.name = "gravity_potential", .unit = "J",
+                                            .description = "potential of gravity, -m g . x (zero at the fixed point)"},
+                                           {.name = "total_energy", .unit = "J",
+                                            .description = "kinetic energy + gravity potential"},
+                                           {.name = "rotation_error", .unit = "rad",
+                                            .description = "|log(R_ref^T R)|: rotation error against the RK4 reference"},
+                                           {.name = "position_error", .unit = "m",
+                                            .description = "|x - x_ref|: centre-of-mass error against the RK4 reference"},
+                                           {.name = "constraint_residual", .unit = "m",
+                                            .description = "largest violation |Phi|_inf of the fixed point after the step"},
+                                           {.name = "newton_iterations", .unit = "1",
+                                            .description = "Newton iterations (linear solves) of the step",
+                                            .integer = true}},
+                               .probes = {{.name = "reference_center_of_mass", .unit = "m",
+                                           .description = "the centre of mass of the RK4 reference, inertial frame"}}});
   results.write_attribute("example", "heavy_top (Bruls, Cardona & Arnold 2012, section 5.1)");
   results.write_attribute("time_step", h);
   results.write_attribute("rho_infinity", rho_infinity);
@@ -131,6 +144,11 @@ int main(int argc, char** argv) try {
   }
   progress.finish();
   const solvers::DynamicCounters& counters = integrator.counters();
+  results.write_attribute("t_end", integrator.time());
+  results.write_attribute("steps", counters.steps);
+  results.write_attribute("newton_iterations", counters.newton_iterations);
+  results.write_attribute("factorizations", counters.factorizations);
+  results.write_attribute("cutbacks", counters.cutbacks);
   results.close();
 
   // 8. Report.

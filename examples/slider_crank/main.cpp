@@ -20,6 +20,7 @@
 #include <spar/spar.hpp>
 #include <spar/joints/joints.hpp>
 
+#include <centerline_fields.hpp>
 #include <cli.hpp>
 
 #include "slider_crank_model.hpp"
@@ -69,15 +70,39 @@ int main(int argc, char** argv) try {
   integrator.initialize();
 
   std::filesystem::create_directories(out);
+  const int samples = 10 * elements + 1;  // centerline points per rod in the results file
+  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank, model.reference(), samples);
+  const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler, model.reference(), samples);
   core::ResultsWriter results(out + "/slider_crank.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
-                               .scalar_names = {"rod2_deformation_rate", "rod1_angular_speed",
-                                                "slider_position", "kinetic_energy", "strain_energy",
-                                                "gravity_potential", "constraint_residual",
-                                                "newton_iterations"},
-                               .probe_names = {"rod2_midpoint", "rod1_tip"},
-                               .centerline_points = {10 * elements + 1, 10 * elements + 1}});
+                               .scalars = {{.name = "rod2_deformation_rate", .unit = "1",
+                                            .description = "Rod II's midpoint distance from its chord's midpoint "
+                                                           "over its length, a fraction (0.05 = 5 %, 003 Fig. 3)"},
+                                           {.name = "rod1_angular_speed", .unit = "rad/s",
+                                            .description = "Rod I's angular speed about Z: the rotation rate of "
+                                                           "its chord r = tip - root, (r x r')_z / |r|^2"},
+                                           {.name = "slider_position", .unit = "m",
+                                            .description = "the slider's x coordinate"},
+                                           {.name = "kinetic_energy", .unit = "J",
+                                            .description = "kinetic energy of the rods and the slider"},
+                                           {.name = "strain_energy", .unit = "J",
+                                            .description = "strain energy of the rods"},
+                                           {.name = "gravity_potential", .unit = "J",
+                                            .description = "potential of gravity, -sum m g . x (zero at the origin)"},
+                                           {.name = "constraint_residual", .unit = "m",
+                                            .description = "largest constraint violation |Phi|_inf after the step "
+                                                           "(position rows in m; the slider's rotation-lock rows "
+                                                           "are dot products, about rad)"},
+                                           {.name = "newton_iterations", .unit = "1",
+                                            .description = "Newton iterations (linear solves) of the step",
+                                            .integer = true}},
+                               .probes = {{.name = "rod2_midpoint", .unit = "m",
+                                           .description = "Rod II's midpoint x(u = 1/2), inertial frame"},
+                                          {.name = "rod1_tip", .unit = "m",
+                                           .description = "Rod I's tip (its last node), inertial frame"}},
+                               .centerline_points = {samples, samples},
+                               .centerline_fields = examples::centerline_field_layout()});
   results.write_attribute("example", "slider_crank (003 section 5.1)");
   results.write_attribute("time_step", h);
   results.write_attribute("strategy", strategy);
@@ -110,8 +135,10 @@ int main(int argc, char** argv) try {
                     .scalars = {rate, speed, q.position[slider].x(), energy.kinetic, energy.strain,
                                 energy.gravity, residual, static_cast<double>(integrator.last_step_iterations())},
                     .probes = {midpoint, q.position[crank_tip]},
-                    .centerlines = {crank.sample_centerline(q, 10 * elements + 1),
-                                    coupler.sample_centerline(q, 10 * elements + 1)}});
+                    .centerlines = {crank.sample_centerline(q, samples), coupler.sample_centerline(q, samples)},
+                    .centerline_fields = {
+                        examples::centerline_fields(crank, crank_arc_length, q, integrator.velocity()),
+                        examples::centerline_fields(coupler, coupler_arc_length, q, integrator.velocity())}});
   };
   record();
   core::ProgressBar progress(t_end, "slider_crank");
@@ -122,6 +149,12 @@ int main(int argc, char** argv) try {
   }
   progress.finish();
   const solvers::DynamicCounters& counters = integrator.counters();
+  results.write_attribute("t_end", integrator.time());
+  results.write_attribute("steps", counters.steps);
+  results.write_attribute("newton_iterations", counters.newton_iterations);
+  results.write_attribute("factorizations", counters.factorizations);
+  results.write_attribute("jtheta_updates", counters.jtheta_evaluations);
+  results.write_attribute("cutbacks", counters.cutbacks);
   results.close();
 
   // 4. Report.

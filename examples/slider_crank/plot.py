@@ -17,7 +17,7 @@ folder = sys.argv[1] if len(sys.argv) > 1 else "results/slider_crank"
 with open(os.path.join(folder, "slider_crank.csv")) as f:
     rows = list(csv.DictReader(f))
 t = [float(r["t"]) for r in rows]
-rate = [100 * float(r["rod2_deformation_rate"]) for r in rows]
+rate = [100 * float(r["rod2_deformation_rate"]) for r in rows]  # stored as a fraction (unit 1), shown in %
 speed = [float(r["rod1_angular_speed"]) for r in rows]
 
 fig, (top, bottom) = plt.subplots(2, 1, figsize=(6, 6), sharex=True)

@@ -1,6 +1,8 @@
 #include <spar/core/hdf5_file.hpp>
 #include <spar/error.hpp>
 
+#include "hdf5_attributes.hpp"
+
 #include <hdf5.h>
 
 #include <vector>
@@ -25,7 +27,8 @@ Hdf5File::Hdf5File(const std::string& path) : path_(path) {
 
 Hdf5File::~Hdf5File() { H5Fclose(static_cast<hid_t>(file_)); }
 
-void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data) {
+void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
+                     const std::string& description) {
   const hid_t file = static_cast<hid_t>(file_);
   const hid_t link_properties = H5Pcreate(H5P_LINK_CREATE);
   H5Pset_create_intermediate_group(link_properties, 1);
@@ -34,8 +37,8 @@ void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data) {
   const hid_t set = H5Dcreate2(file, name.c_str(), H5T_NATIVE_DOUBLE, space, link_properties,
                                H5P_DEFAULT, H5P_DEFAULT);
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = data;
-  const herr_t status =
-      set < 0 ? -1 : H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data());
+  herr_t status = set < 0 ? -1 : H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data());
+  if (status >= 0) status = detail::describe_dataset(set, unit, description);
   if (set >= 0) H5Dclose(set);
   H5Sclose(space);
   H5Pclose(link_properties);
@@ -44,26 +47,12 @@ void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data) {
 }
 
 void Hdf5File::write_attribute(const std::string& name, double value) {
-  const hid_t file = static_cast<hid_t>(file_);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attribute = H5Acreate2(file, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-  const herr_t status = attribute < 0 ? -1 : H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value);
-  if (attribute >= 0) H5Aclose(attribute);
-  H5Sclose(space);
-  check(status, "write attribute " + name, path_);
+  check(detail::write_scalar_attribute(static_cast<hid_t>(file_), name, H5T_NATIVE_DOUBLE, &value),
+        "write attribute " + name, path_);
 }
 
 void Hdf5File::write_attribute(const std::string& name, const std::string& value) {
-  const hid_t file = static_cast<hid_t>(file_);
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, value.size() + 1);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attribute = H5Acreate2(file, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
-  const herr_t status = attribute < 0 ? -1 : H5Awrite(attribute, type, value.c_str());
-  if (attribute >= 0) H5Aclose(attribute);
-  H5Sclose(space);
-  H5Tclose(type);
-  check(status, "write attribute " + name, path_);
+  check(detail::write_string_attribute(static_cast<hid_t>(file_), name, value), "write attribute " + name, path_);
 }
 
 }  // namespace spar::core

@@ -1,4 +1,8 @@
 #include <spar/core/results_writer.hpp>
+
+#include "hdf5_attributes.hpp"
+#include "xdmf_sidecar.hpp"
+
 #include <spar/error.hpp>
 #include <spar/lie/quaternion.hpp>
 
@@ -11,7 +15,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <set>
 #include <utility>
 
@@ -36,11 +40,13 @@ private:
   herr_t (*close_)(hid_t);
 };
 
-/// One time-history dataset of `steps × shape` doubles, extended by every block write.
+/// One time-history dataset of `steps × shape` values, extended by every block write.
 struct Series {
   std::string name;            ///< absolute path in the file, e.g. "/positions"
+  std::string unit;            ///< stored as the dataset's `units` attribute
   std::string description;     ///< stored as the dataset's `description` attribute
   std::vector<hsize_t> shape;  ///< per-step shape, {} for one scalar per step
+  bool integer = false;        ///< stored as int32 (counters), else as doubles
   hid_t dataset = H5I_INVALID_HID;
   std::vector<double> buffer;  ///< steps not yet written, row-major
 
@@ -72,21 +78,6 @@ std::string format_double(double value) {
   return std::string(text, result.ptr);
 }
 
-/// `text` with the XML special characters replaced by entities.
-std::string xml_escape(const std::string& text) {
-  std::string result;
-  for (char c : text) {
-    switch (c) {
-      case '&': result += "&amp;"; break;
-      case '<': result += "&lt;"; break;
-      case '>': result += "&gt;"; break;
-      case '"': result += "&quot;"; break;
-      default: result += c;
-    }
-  }
-  return result;
-}
-
 /// Why `path` cannot be created, as far as the file system tells.
 std::string creation_failure_reason(const std::string& path) {
   namespace fs = std::filesystem;
@@ -99,14 +90,20 @@ std::string creation_failure_reason(const std::string& path) {
   return "HDF5 refused to create it (the file may be open in another program, or the disk full)";
 }
 
-/// A `name`: non-empty, no '/' (it becomes a dataset name), unique within `seen`.
-void check_name(const std::string& name, const char* field, std::set<std::string>& seen, const std::string& where) {
+/// A quantity of layout.`field`: a name that is non-empty, has no '/' (it becomes a dataset name)
+/// and is unique within `seen`; a unit and a description.
+void check_quantity(const ResultsQuantity& quantity, const std::string& field, std::set<std::string>& seen,
+                    const std::string& where) {
+  const std::string& name = quantity.name;
   if (name.empty() || name.find('/') != std::string::npos)
-    throw Error(std::string("layout.") + field + " holds the name \"" + name + "\", which is empty or contains '/'",
-                where, "use plain names such as kinetic_energy");
+    throw Error("layout." + field + " holds the name \"" + name + "\", which is empty or contains '/'", where,
+                "use plain names such as kinetic_energy");
   if (!seen.insert(name).second)
-    throw Error(std::string("layout.") + field + " holds \"" + name + "\" twice", where,
-                "give every " + std::string(field) + " entry a distinct name");
+    throw Error("layout." + field + " holds \"" + name + "\" twice", where,
+                "give every " + field + " entry a distinct name");
+  if (quantity.unit.empty() || quantity.description.empty())
+    throw Error("layout." + field + " entry \"" + name + "\" has no " + (quantity.unit.empty() ? "unit" : "description"),
+                where, "state its SI unit (\"1\" for ratios and counts) and what it is: the file carries both");
 }
 
 /// Checks the layout's counts and names; throws spar::Error naming the field.
@@ -119,79 +116,35 @@ void check_layout(const ResultsLayout& layout, int flush_every, const std::strin
     throw Error("flush_every = " + std::to_string(flush_every) + " must be at least 1", where,
                 "pass the number of steps per block write, e.g. 100");
   std::set<std::string> scalars, probes;
-  for (const std::string& name : layout.scalar_names) check_name(name, "scalar_names", scalars, where);
-  for (const std::string& name : layout.probe_names) check_name(name, "probe_names", probes, where);
+  for (const ResultsQuantity& scalar : layout.scalars) check_quantity(scalar, "scalars", scalars, where);
+  for (const ResultsQuantity& probe : layout.probes) {
+    check_quantity(probe, "probes", probes, where);
+    if (probe.integer)
+      throw Error("layout.probes entry \"" + probe.name + "\" is marked integer", where,
+                  "probes are 3-vectors of doubles; declare counters as scalars");
+  }
   for (std::size_t k = 0; k < layout.centerline_points.size(); ++k)
     if (layout.centerline_points[k] < 2)
       throw Error("layout.centerline_points[" + std::to_string(k) + "] = " + std::to_string(layout.centerline_points[k]) +
                       " is below 2",
                   where, "sample each beam's centerline at 2 points or more (e.g. 10 per element + 1)");
+  std::set<std::string> fields;
+  for (const CenterlineField& field : layout.centerline_fields) {
+    check_quantity({.name = field.name, .unit = field.unit, .description = field.description}, "centerline_fields",
+                   fields, where);
+    if (field.name.find_first_of(":|") != std::string::npos)
+      throw Error("layout.centerline_fields entry \"" + field.name + "\" contains ':' or '|'", where,
+                  "name the field without the characters XDMF references reserve, e.g. axial_strain");
+    if (field.components != 1 && field.components != 3)
+      throw Error("layout.centerline_fields entry \"" + field.name + "\" has " + std::to_string(field.components) +
+                      " components",
+                  where, "give a scalar (1 component) or a vector (3 components) per point");
+  }
 }
 
 /// `path` with its extension replaced by `.xmf`.
 std::string sidecar_path(const std::string& path) {
   return std::filesystem::path(path).replace_extension(".xmf").string();
-}
-
-/// What the sidecar describes: the HDF5 file's name (relative to the sidecar) and its steps.
-struct XdmfInput {
-  std::string h5_name;
-  const ResultsLayout* layout;
-  const std::vector<double>* times;  ///< the flushed steps' times
-};
-
-/// A HyperSlab DataItem: step `step`'s `rows × 3` block (the first 3 columns) of dataset `name`,
-/// whose shape is `steps × rows × columns`.
-std::string step_slab(const XdmfInput& in, const std::string& name, std::size_t step, int rows, int columns,
-                      const std::string& indent) {
-  const std::string r = std::to_string(rows);
-  return indent + "<DataItem ItemType=\"HyperSlab\" Dimensions=\"" + r + " 3\" Type=\"HyperSlab\">\n" + indent +
-         " <DataItem Dimensions=\"3 3\" NumberType=\"Int\" Format=\"XML\">" + std::to_string(step) + " 0 0 1 1 1 1 " + r + " 3</DataItem>\n" +
-         indent + " <DataItem Dimensions=\"" + std::to_string(in.times->size()) + " " + r + " " + std::to_string(columns) +
-         "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" + in.h5_name + ":" + name + "</DataItem>\n" + indent +
-         "</DataItem>\n";
-}
-
-/// Beam k at one step: a polyline through its sampled centerline points.
-std::string beam_grid(const XdmfInput& in, std::size_t step, std::size_t k) {
-  const std::string p = std::to_string(in.layout->centerline_points[k]);
-  const std::string beam = std::to_string(k);
-  return "    <Grid Name=\"beam" + beam + "\" GridType=\"Uniform\">\n" +
-         "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"1\" NodesPerElement=\"" + p + "\">\n" +
-         "      <DataItem Dimensions=\"1 " + p + "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + in.h5_name +
-         ":/xdmf/polyline" + beam + "</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
-         step_slab(in, "/centerlines/beam" + beam, step, in.layout->centerline_points[k], 3, "      ") +
-         "     </Geometry>\n    </Grid>\n";
-}
-
-/// The nodes at one step: a point cloud with the nodes' translational velocity when recorded.
-std::string nodes_grid(const XdmfInput& in, std::size_t step) {
-  const int n = in.layout->node_count;
-  std::string grid = "    <Grid Name=\"nodes\" GridType=\"Uniform\">\n     <Topology TopologyType=\"Polyvertex\" "
-                     "NumberOfElements=\"" + std::to_string(n) + "\" NodesPerElement=\"1\">\n" +
-                     "      <DataItem Dimensions=\"" + std::to_string(n) +
-                     "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + in.h5_name +
-                     ":/xdmf/polyvertex</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
-                     step_slab(in, "/positions", step, n, 3, "      ") + "     </Geometry>\n";
-  if (in.layout->velocities)
-    grid += "     <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n" +
-            step_slab(in, "/velocities", step, n, 6, "      ") + "     </Attribute>\n";
-  return grid + "    </Grid>\n";
-}
-
-/// The XDMF document: a temporal collection with one spatial collection per flushed step
-/// (its time, one polyline grid per beam, the nodes), every array a HyperSlab of the HDF5 file.
-std::string xdmf_document(const XdmfInput& in) {
-  std::string xml = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"3.0\">\n"
-                    " <Domain>\n  <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (std::size_t step = 0; step < in.times->size(); ++step) {
-    xml += "   <Grid Name=\"step" + std::to_string(step) + "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n" +
-           "    <Time Value=\"" + format_double((*in.times)[step]) + "\"/>\n";
-    for (std::size_t k = 0; k < in.layout->centerline_points.size(); ++k) xml += beam_grid(in, step, k);
-    if (in.layout->node_count > 0) xml += nodes_grid(in, step);
-    xml += "   </Grid>\n";
-  }
-  return xml + "  </Grid>\n </Domain>\n</Xdmf>\n";
 }
 
 }  // namespace
@@ -205,7 +158,9 @@ struct ResultsWriter::Impl {
   std::vector<Series> series;  ///< /time first; the others in append order
   int positions = -1, quaternions = -1, velocities = -1, multipliers = -1;
   int first_scalar = 0, first_probe = 0, first_centerline = 0;
-  std::vector<double> times;   ///< every appended step's time
+  int first_field = 0;  ///< field f of beam k is series first_field + f × beams + k
+  double last_time = 0;        ///< the last appended step's time
+  std::unique_ptr<detail::XdmfSidecar> sidecar;
   int appended = 0;
   int flushed = 0;
 
@@ -223,33 +178,51 @@ struct ResultsWriter::Impl {
   }
 
   /// Adds a series of `shape` per step and returns its index.
-  int add_series(std::string name, std::string description, std::vector<hsize_t> shape) {
-    series.push_back(Series{std::move(name), std::move(description), std::move(shape)});
+  int add_series(std::string name, std::string unit, std::string description, std::vector<hsize_t> shape,
+                 bool integer = false) {
+    series.push_back(Series{std::move(name), std::move(unit), std::move(description), std::move(shape), integer});
     return static_cast<int>(series.size()) - 1;
   }
 
   /// The series of the layout, in the order append() fills them.
   void plan_series() {
     const auto n = static_cast<hsize_t>(layout.node_count);
-    add_series("/time", "time of each step, s", {});
+    add_series("/time", "s", "time of each step", {});
     if (n > 0) {
-      positions = add_series("/positions", "node positions (inertial frame), m", {n, 3});
-      quaternions = add_series("/quaternions", "node rotations R as unit quaternions (w, x, y, z), w >= 0", {n, 4});
+      positions = add_series("/positions", "m", "node positions x (inertial frame), node by node", {n, 3});
+      quaternions = add_series("/quaternions", "1",
+                               "node rotations R (material to inertial) as unit quaternions (w, x, y, z), w >= 0",
+                               {n, 4});
       if (layout.velocities)
-        velocities = add_series("/velocities",
-                                "node velocities: x dot (inertial, m/s) then Omega (material, rad/s)", {n, 6});
+        velocities = add_series("/velocities", "m/s, rad/s",
+                                "node velocities: x dot (inertial, m/s) in columns 0-2, then the angular velocity "
+                                "Omega (material frame, rad/s) in columns 3-5",
+                                {n, 6});
     }
     if (layout.multiplier_count > 0)
-      multipliers = add_series("/multipliers", "Lagrange multipliers of the constraints",
+      multipliers = add_series("/multipliers", "N, N m",
+                               "Lagrange multipliers of the constraints, constraint by constraint: forces (N) for "
+                               "position constraints, moments (N m) for rotation constraints",
                                {static_cast<hsize_t>(layout.multiplier_count)});
     first_scalar = static_cast<int>(series.size());
-    for (const std::string& name : layout.scalar_names) add_series("/scalars/" + name, "per-step scalar " + name, {});
+    for (const ResultsQuantity& scalar : layout.scalars)
+      add_series("/scalars/" + scalar.name, scalar.unit, scalar.description, {}, scalar.integer);
     first_probe = static_cast<int>(series.size());
-    for (const std::string& name : layout.probe_names) add_series("/probes/" + name, "probe " + name + ", m", {3});
+    for (const ResultsQuantity& probe : layout.probes) add_series("/probes/" + probe.name, probe.unit, probe.description, {3});
     first_centerline = static_cast<int>(series.size());
     for (std::size_t k = 0; k < layout.centerline_points.size(); ++k)
-      add_series("/centerlines/beam" + std::to_string(k), "sampled centerline points of beam " + std::to_string(k) + ", m",
+      add_series("/centerlines/beam" + std::to_string(k), "m",
+                 "beam " + std::to_string(k) +
+                     "'s centerline (inertial frame) at points equally spaced in its knot parameter, root to tip",
                  {static_cast<hsize_t>(layout.centerline_points[k]), 3});
+    first_field = static_cast<int>(series.size());
+    for (const CenterlineField& field : layout.centerline_fields)
+      for (std::size_t k = 0; k < layout.centerline_points.size(); ++k) {
+        std::vector<hsize_t> shape{static_cast<hsize_t>(layout.centerline_points[k])};
+        if (field.components > 1) shape.push_back(static_cast<hsize_t>(field.components));
+        add_series("/centerline_fields/" + field.name + "/beam" + std::to_string(k), field.unit,
+                   field.description + " (beam " + std::to_string(k) + ", at its centerline points)", shape);
+      }
   }
 
   void create_file() {
@@ -281,18 +254,21 @@ struct ResultsWriter::Impl {
     const Hid creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
     H5Pset_chunk(creation, rank, chunk.data());
     const Hid links(intermediate_groups(), H5Pclose);
-    s.dataset = H5Dcreate2(file, s.name.c_str(), H5T_IEEE_F64LE, space, links, creation, H5P_DEFAULT);
+    s.dataset = H5Dcreate2(file, s.name.c_str(), s.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE, space, links, creation,
+                           H5P_DEFAULT);
     check(s.dataset < 0 ? -1 : 0, "create dataset " + s.name, "ResultsWriter");
-    set_attribute(s.dataset, "description", s.description, "ResultsWriter");
+    check(detail::describe_dataset(s.dataset, s.unit, s.description), "describe dataset " + s.name, "ResultsWriter");
   }
 
   /// An int dataset (`dims`) for the sidecar's topologies.
-  void write_ints(const std::string& name, const std::vector<int>& values, const std::vector<hsize_t>& dims) {
+  void write_ints(const std::string& name, const std::vector<int>& values, const std::vector<hsize_t>& dims,
+                  const std::string& description) {
     const Hid space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
     const Hid links(intermediate_groups(), H5Pclose);
     const Hid set(H5Dcreate2(file, name.c_str(), H5T_STD_I32LE, space, links, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
     check(set.valid() ? H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) : -1,
           "write dataset " + name, "ResultsWriter");
+    check(detail::describe_dataset(set, "1", description), "describe dataset " + name, "ResultsWriter");
   }
 
   /// Point indices 0 … count−1 of each sidecar topology: one polyline per beam, the nodes.
@@ -304,24 +280,12 @@ struct ResultsWriter::Impl {
     };
     for (std::size_t k = 0; k < layout.centerline_points.size(); ++k) {
       const int p = layout.centerline_points[k];
-      write_ints("/xdmf/polyline" + std::to_string(k), indices(p), {1, static_cast<hsize_t>(p)});
+      write_ints("/xdmf/polyline" + std::to_string(k), indices(p), {1, static_cast<hsize_t>(p)},
+                 "point indices 0 ... P-1 of beam " + std::to_string(k) + "'s polyline in the XDMF sidecar");
     }
     if (layout.node_count > 0)
-      write_ints("/xdmf/polyvertex", indices(layout.node_count), {static_cast<hsize_t>(layout.node_count)});
-  }
-
-  /// Writes a scalar attribute on `object`, replacing one of the same name.
-  void set_attribute(hid_t object, const std::string& name, hid_t type, const void* value, const std::string& function) {
-    if (H5Aexists(object, name.c_str()) > 0) check(H5Adelete(object, name.c_str()), "replace attribute " + name, function);
-    const Hid space(H5Screate(H5S_SCALAR), H5Sclose);
-    const Hid attribute(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-    check(attribute.valid() ? H5Awrite(attribute, type, value) : -1, "write attribute " + name, function);
-  }
-
-  void set_attribute(hid_t object, const std::string& name, const std::string& value, const std::string& function) {
-    const Hid type(H5Tcopy(H5T_C_S1), H5Tclose);
-    H5Tset_size(type, value.size() + 1);
-    set_attribute(object, name, type, value.c_str(), function);
+      write_ints("/xdmf/polyvertex", indices(layout.node_count), {static_cast<hsize_t>(layout.node_count)},
+                 "point indices 0 ... n-1 of the nodes' point cloud in the XDMF sidecar");
   }
 
   /// Appends the buffered steps to every dataset.
@@ -345,27 +309,9 @@ struct ResultsWriter::Impl {
     flushed = appended;
   }
 
-  /// Rewrites the sidecar through a temporary file, so a reader never sees it half written.
-  void write_xdmf() const {
-    const std::vector<double> flushed_times(times.begin(), times.begin() + flushed);
-    const XdmfInput input{xml_escape(std::filesystem::path(path).filename().string()), &layout, &flushed_times};
-    const std::string temporary = xdmf_path + ".tmp";
-    {
-      std::ofstream out(temporary, std::ios::trunc);
-      out << xdmf_document(input);
-      if (!out)
-        throw Error("cannot write the XDMF sidecar " + temporary, where("flush"),
-                    "check that the output folder is writable and the disk is not full");
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, xdmf_path, ec);
-    if (ec)
-      throw Error("cannot rename " + temporary + " to " + xdmf_path + ": " + ec.message(), where("flush"),
-                  "check that the output folder is writable");
-  }
-
-  /// Closes every dataset and the file; returns false if HDF5 reported a failure.
+  /// Closes every dataset, the file and the sidecar; returns false if HDF5 reported a failure.
   bool release() {
+    sidecar.reset();
     bool ok = true;
     for (Series& s : series)
       if (s.dataset >= 0) {
@@ -386,9 +332,9 @@ struct ResultsWriter::Impl {
   }
 
   void check_step(const ResultsStep& step) const {
-    if (!std::isfinite(step.time) || (appended > 0 && !(step.time > times.back())))
+    if (!std::isfinite(step.time) || (appended > 0 && !(step.time > last_time)))
       throw Error("step.time = " + format_double(step.time) + " is not finite or not after the previous step's " +
-                      (appended > 0 ? format_double(times.back()) : std::string("-")),
+                      (appended > 0 ? format_double(last_time) : std::string("-")),
                   where("append") + " at step " + std::to_string(appended),
                   "append converged steps only, in increasing time");
     const auto n = static_cast<std::size_t>(layout.node_count);
@@ -409,13 +355,27 @@ struct ResultsWriter::Impl {
     if (lambda_size != m)
       size_error("multipliers", lambda_size, std::to_string(m) + " (layout.multiplier_count)",
                  "pass the multiplier vector of the constraints, or fix layout.multiplier_count");
-    if (step.scalars.size() != layout.scalar_names.size())
-      size_error("scalars", step.scalars.size(), std::to_string(layout.scalar_names.size()) + " (layout.scalar_names)",
-                 "pass one value per scalar name, in the same order");
-    if (step.probes.size() != layout.probe_names.size())
-      size_error("probes", step.probes.size(), std::to_string(layout.probe_names.size()) + " (layout.probe_names)",
-                 "pass one point per probe name, in the same order");
+    if (step.scalars.size() != layout.scalars.size())
+      size_error("scalars", step.scalars.size(), std::to_string(layout.scalars.size()) + " (layout.scalars)",
+                 "pass one value per layout scalar, in the same order");
+    if (step.probes.size() != layout.probes.size())
+      size_error("probes", step.probes.size(), std::to_string(layout.probes.size()) + " (layout.probes)",
+                 "pass one point per layout probe, in the same order");
+    check_counters(step);
     check_centerlines(step);
+  }
+
+  /// The values of integer scalars are whole numbers that fit in 32 bits.
+  void check_counters(const ResultsStep& step) const {
+    for (std::size_t i = 0; i < step.scalars.size(); ++i) {
+      const double value = step.scalars[i];
+      if (layout.scalars[i].integer &&
+          !(value == std::trunc(value) && std::abs(value) <= std::numeric_limits<std::int32_t>::max()))
+        throw Error("step.scalars[" + std::to_string(i) + "] = " + format_double(value) + " for the integer scalar " +
+                        layout.scalars[i].name + " is not a whole number of 32 bits",
+                    where("append") + " at step " + std::to_string(appended),
+                    "pass the counter's value, or declare the scalar without `integer`");
+    }
   }
 
   void check_centerlines(const ResultsStep& step) const {
@@ -430,6 +390,32 @@ struct ResultsWriter::Impl {
                    std::to_string(points[k]) + " × 3 (layout.centerline_points[" + std::to_string(k) +
                        "] rows of x, y, z), got " + std::to_string(c.rows()) + " × " + std::to_string(c.cols()),
                    "sample the beam at the layout's number of points");
+    }
+    check_centerline_fields(step);
+  }
+
+  void check_centerline_fields(const ResultsStep& step) const {
+    const std::vector<CenterlineField>& fields = layout.centerline_fields;
+    const std::size_t beams = fields.empty() ? 0 : layout.centerline_points.size();
+    if (step.centerline_fields.size() != beams)
+      size_error("centerline_fields", step.centerline_fields.size(),
+                 fields.empty() ? std::string("none (layout.centerline_fields is empty)")
+                                : std::to_string(beams) + " beams (layout.centerline_points)",
+                 "pass per beam one matrix per layout.centerline_fields entry");
+    for (std::size_t k = 0; k < beams; ++k) {
+      const std::string entry = "centerline_fields[" + std::to_string(k) + "]";
+      if (step.centerline_fields[k].size() != fields.size())
+        size_error(entry, step.centerline_fields[k].size(), std::to_string(fields.size()) + " (layout.centerline_fields)",
+                   "pass one matrix per field, in the layout's order");
+      for (std::size_t f = 0; f < fields.size(); ++f) {
+        const Eigen::MatrixXd& values = step.centerline_fields[k][f];
+        if (values.rows() != layout.centerline_points[k] || values.cols() != fields[f].components)
+          size_error(entry + "[" + std::to_string(f) + "] (" + fields[f].name + ")", static_cast<std::size_t>(values.size()),
+                     std::to_string(layout.centerline_points[k]) + " × " + std::to_string(fields[f].components) +
+                         " (a row per centerline point), got " + std::to_string(values.rows()) + " × " +
+                         std::to_string(values.cols()),
+                     "sample the field at the beam's centerline points");
+      }
     }
   }
 
@@ -461,7 +447,13 @@ struct ResultsWriter::Impl {
       const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rows = step.centerlines[k];
       series[static_cast<std::size_t>(first_centerline) + k].push(rows.data(), static_cast<std::size_t>(rows.size()));
     }
-    times.push_back(step.time);
+    for (std::size_t k = 0; k < step.centerline_fields.size(); ++k)
+      for (std::size_t f = 0; f < step.centerline_fields[k].size(); ++f) {
+        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = step.centerline_fields[k][f];
+        series[static_cast<std::size_t>(first_field) + f * step.centerline_fields.size() + k].push(
+            rows.data(), static_cast<std::size_t>(rows.size()));
+      }
+    last_time = step.time;
   }
 };
 
@@ -478,7 +470,10 @@ ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, i
   try {
     for (Series& s : impl.series) impl.create_dataset(s);
     impl.write_topologies();
-    impl.set_attribute(impl.file, "schema", "spar.results/1", "ResultsWriter");
+    impl.check(detail::write_string_attribute(impl.file, "schema", "spar.results/2"), "write attribute schema",
+               "ResultsWriter");
+    impl.sidecar = std::make_unique<detail::XdmfSidecar>(
+        impl.xdmf_path, std::filesystem::path(h5_path).filename().string(), impl.layout);
     flush();
   } catch (...) {
     impl.release();
@@ -505,17 +500,26 @@ ResultsWriter& ResultsWriter::operator=(ResultsWriter&& other) noexcept {
 
 void ResultsWriter::write_attribute(const std::string& name, double value) {
   impl_->require_open("write_attribute");
-  impl_->set_attribute(impl_->file, name, H5T_NATIVE_DOUBLE, &value, "write_attribute");
+  impl_->check(detail::write_scalar_attribute(impl_->file, name, H5T_NATIVE_DOUBLE, &value), "write attribute " + name,
+               "write_attribute");
+  impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
+}
+
+void ResultsWriter::write_attribute(const std::string& name, std::int64_t value) {
+  impl_->require_open("write_attribute");
+  impl_->check(detail::write_scalar_attribute(impl_->file, name, H5T_NATIVE_INT64, &value), "write attribute " + name,
+               "write_attribute");
   impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
 }
 
 void ResultsWriter::write_attribute(const std::string& name, const std::string& value) {
   impl_->require_open("write_attribute");
-  impl_->set_attribute(impl_->file, name, value, "write_attribute");
+  impl_->check(detail::write_string_attribute(impl_->file, name, value), "write attribute " + name, "write_attribute");
   impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
 }
 
-void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixXd& data) {
+void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
+                                   const std::string& description) {
   Impl& impl = *impl_;
   impl.require_open("write_constant");
   if (H5Lexists(impl.file, name.c_str(), H5P_DEFAULT) > 0)
@@ -528,6 +532,7 @@ void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixX
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = data;
   impl.check(set.valid() ? H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data()) : -1,
              "write dataset " + name, "write_constant");
+  impl.check(detail::describe_dataset(set, unit, description), "describe dataset " + name, "write_constant");
   impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "write_constant");
 }
 
@@ -543,9 +548,11 @@ void ResultsWriter::append(const ResultsStep& step) {
 void ResultsWriter::flush() {
   Impl& impl = *impl_;
   impl.require_open("flush");
+  const int first = impl.flushed;
+  const std::vector<double> times = impl.series[0].buffer;  // the buffered steps' times
   impl.write_block();
   impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "flush");
-  impl.write_xdmf();
+  impl.sidecar->append(first, times, impl.flushed);
 }
 
 void ResultsWriter::close() {

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Shared by the output tests: a small deterministic run (3 nodes, 2 multipliers, 2 scalars,
-/// 1 probe, 2 beams), a scratch folder, and readers for what ResultsWriter wrote.
+/// 1 probe, 2 beams with 2 centerline fields), a scratch folder, and readers for what
+/// ResultsWriter wrote.
 
 #include <spar/core/configuration.hpp>
 #include <spar/core/results_writer.hpp>
@@ -15,6 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace spar::test {
@@ -43,9 +45,12 @@ inline core::ResultsLayout sample_layout() {
   core::ResultsLayout layout;
   layout.node_count = 3;
   layout.multiplier_count = 2;
-  layout.scalar_names = {"kinetic_energy", "newton_iterations"};
-  layout.probe_names = {"tip"};
+  layout.scalars = {{.name = "kinetic_energy", .unit = "J", .description = "kinetic energy"},
+                    {.name = "newton_iterations", .unit = "1", .description = "Newton iterations", .integer = true}};
+  layout.probes = {{.name = "tip", .unit = "m", .description = "tip position"}};
   layout.centerline_points = {4, 5};
+  layout.centerline_fields = {{.name = "arc_length", .unit = "m", .description = "arc length"},
+                              {.name = "velocity", .unit = "m/s", .description = "velocity", .components = 3}};
   return layout;
 }
 
@@ -74,6 +79,8 @@ struct SampleStep {
       Eigen::MatrixXd centerline(points, 3);
       for (int p = 0; p < points; ++p) centerline.row(p) << p, k * 0.1 * p, points + 10.0 * k;
       step.centerlines.push_back(centerline);
+      const Eigen::MatrixXd arc_length = Eigen::VectorXd::LinSpaced(points, 0.0, 1.0);
+      step.centerline_fields.push_back({arc_length, -centerline - Eigen::MatrixXd::Constant(points, 3, k)});
     }
   }
 };
@@ -111,6 +118,32 @@ public:
     return contents;
   }
 
+  /// The HDF5 type class (H5T_FLOAT, H5T_INTEGER, ...) and size in bytes of dataset `name`.
+  std::pair<H5T_class_t, std::size_t> dataset_type(const std::string& name) const {
+    const hid_t set = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+    if (set < 0) throw std::runtime_error("no dataset " + name);
+    const hid_t type = H5Dget_type(set);
+    const std::pair<H5T_class_t, std::size_t> result{H5Tget_class(type), H5Tget_size(type)};
+    H5Tclose(type);
+    H5Dclose(set);
+    return result;
+  }
+
+  /// The absolute names of every dataset in the file.
+  std::vector<std::string> datasets() const {
+    std::vector<std::string> names;
+    // Generic, so it converts to the link callback of HDF5 1.10 (H5L_info_t) and 1.12 (H5L_info2_t).
+    auto visit = [](hid_t group, const char* name, const auto*, void* data) -> herr_t {
+      const hid_t object = H5Oopen(group, name, H5P_DEFAULT);
+      if (object >= 0 && H5Iget_type(object) == H5I_DATASET)
+        static_cast<std::vector<std::string>*>(data)->push_back(std::string("/") + name);
+      if (object >= 0) H5Oclose(object);
+      return 0;
+    };
+    H5Lvisit(id_, H5_INDEX_NAME, H5_ITER_NATIVE, visit, &names);
+    return names;
+  }
+
   double double_attribute(const std::string& name) const {
     double value = 0;
     const hid_t attribute = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
@@ -120,16 +153,51 @@ public:
     return value;
   }
 
-  std::string string_attribute(const std::string& name) const {
+  /// A 64-bit integer attribute of the root group; throws if it is stored as anything else.
+  long long integer_attribute(const std::string& name) const {
+    long long value = 0;
     const hid_t attribute = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
     if (attribute < 0) throw std::runtime_error("no attribute " + name);
     const hid_t type = H5Aget_type(attribute);
-    std::string value(H5Tget_size(type), '\0');
-    H5Aread(attribute, type, value.data());
+    const bool int64 = H5Tget_class(type) == H5T_INTEGER && H5Tget_size(type) == 8;
+    H5Aread(attribute, H5T_NATIVE_LLONG, &value);
     H5Tclose(type);
     H5Aclose(attribute);
-    return value.substr(0, value.find('\0'));
+    if (!int64) throw std::runtime_error("attribute " + name + " is not a 64-bit integer");
+    return value;
   }
+
+  /// A string attribute and how it is stored.
+  struct StringAttribute {
+    std::string value;
+    bool variable_length = false;
+    bool utf8 = false;
+  };
+
+  /// String attribute `name` of `object` (a group or dataset path), fixed or variable length.
+  StringAttribute string_attribute_of(const std::string& object, const std::string& name) const {
+    const hid_t attribute = H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    if (attribute < 0) throw std::runtime_error("no attribute " + name + " on " + object);
+    const hid_t type = H5Aget_type(attribute);
+    StringAttribute result;
+    result.utf8 = H5Tget_cset(type) == H5T_CSET_UTF8;
+    result.variable_length = H5Tis_variable_str(type) > 0;
+    if (result.variable_length) {
+      char* text = nullptr;
+      H5Aread(attribute, type, &text);
+      result.value = text == nullptr ? "" : text;
+      H5free_memory(text);
+    } else {
+      std::string value(H5Tget_size(type), '\0');
+      H5Aread(attribute, type, value.data());
+      result.value = value.substr(0, value.find('\0'));
+    }
+    H5Tclose(type);
+    H5Aclose(attribute);
+    return result;
+  }
+
+  std::string string_attribute(const std::string& name) const { return string_attribute_of("/", name).value; }
 
 private:
   hid_t id_;

@@ -54,6 +54,18 @@ void check_round_trip(const ReadOnlyFile& file, int steps) {
         for (int c = 0; c < 3; ++c)
           CHECK(centerline.values[(s * static_cast<std::size_t>(expected.rows()) + static_cast<std::size_t>(p)) * 3 +
                                   static_cast<std::size_t>(c)] == expected(p, c));
+      const std::string k = std::to_string(beam);
+      const DatasetContents arc_length = file.read("/centerline_fields/arc_length/beam" + k),
+                            velocity = file.read("/centerline_fields/velocity/beam" + k);
+      const auto P = static_cast<std::size_t>(expected.rows());
+      REQUIRE(arc_length.shape == std::vector<hsize_t>{S, P});
+      REQUIRE(velocity.shape == std::vector<hsize_t>{S, P, 3});
+      for (std::size_t p = 0; p < P; ++p) {
+        CHECK(arc_length.values[s * P + p] == sample.step.centerline_fields[beam][0](static_cast<int>(p), 0));
+        for (std::size_t c = 0; c < 3; ++c)
+          CHECK(velocity.values[(s * P + p) * 3 + c] ==
+                sample.step.centerline_fields[beam][1](static_cast<int>(p), static_cast<int>(c)));
+      }
     }
   }
 }
@@ -74,8 +86,8 @@ TEST_CASE("ResultsWriter round-trips every dataset whatever the block size", "[o
       CHECK(writer.steps_written() == k + 1);
       CHECK(writer.steps_flushed() == (k + 1) / flush_every * flush_every);
     }
-    writer.write_constant("counters/newton_iterations", Eigen::MatrixXd::Constant(1, 1, 42));
-    writer.write_constant("reference/centerline", Eigen::MatrixXd::Identity(4, 3));
+    writer.write_attribute("newton_iterations", 42);
+    writer.write_constant("reference/centerline", Eigen::MatrixXd::Identity(4, 3), "m", "reference centerline");
     writer.close();
     CHECK(writer.steps_flushed() == sample_steps);
     writer.close();  // idempotent
@@ -84,8 +96,8 @@ TEST_CASE("ResultsWriter round-trips every dataset whatever the block size", "[o
   check_round_trip(file, sample_steps);
   CHECK(file.string_attribute("strategy") == "frozen");
   CHECK(file.double_attribute("h") == 1e-4);
-  CHECK(file.string_attribute("schema") == "spar.results/1");
-  CHECK(file.read("counters/newton_iterations").values == std::vector<double>{42});
+  CHECK(file.string_attribute("schema") == "spar.results/2");
+  CHECK(file.integer_attribute("newton_iterations") == 42);
   const DatasetContents reference = file.read("reference/centerline");
   CHECK(reference.shape == std::vector<hsize_t>{4, 3});
   CHECK(reference.values[0] == 1.0);
@@ -99,7 +111,7 @@ TEST_CASE("ResultsWriter writes only the datasets of its layout", "[output]") {
   const spar::test::ScratchFolder folder("minimal");
   const std::string path = folder.file("minimal.h5");
   ResultsLayout layout;
-  layout.scalar_names = {"total_energy"};
+  layout.scalars = {{.name = "total_energy", .unit = "J", .description = "total energy"}};
   {
     ResultsWriter writer(path, layout, 3);
     for (int k = 0; k < 4; ++k) {
@@ -112,7 +124,8 @@ TEST_CASE("ResultsWriter writes only the datasets of its layout", "[output]") {
   const ReadOnlyFile file(path);
   CHECK(file.read("/time").values == std::vector<double>{0, 1, 2, 3});
   CHECK(file.read("/scalars/total_energy").values == std::vector<double>{0, 10, 20, 30});
-  for (const char* absent : {"/positions", "/quaternions", "/velocities", "/multipliers", "/probes", "/centerlines"})
+  for (const char* absent :
+       {"/positions", "/quaternions", "/velocities", "/multipliers", "/probes", "/centerlines", "/centerline_fields"})
     CHECK_FALSE(file.has(absent));
 }
 
@@ -138,6 +151,11 @@ TEST_CASE("ResultsWriter rejects steps that do not match the layout", "[output]"
     step.multipliers = nullptr;
     CHECK_THROWS_WITH(writer.append(step), Contains("step.multipliers has 0 entries, expected 2"));
   }
+  SECTION("counters") {
+    step.scalars[1] = 2.5;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.scalars[1] = 2.5") && Contains("newton_iterations") &&
+                                               Contains("not a whole number"));
+  }
   SECTION("scalars and probes") {
     step.scalars.pop_back();
     CHECK_THROWS_WITH(writer.append(step), Contains("step.scalars has 1 entries, expected 2"));
@@ -150,6 +168,15 @@ TEST_CASE("ResultsWriter rejects steps that do not match the layout", "[output]"
     CHECK_THROWS_WITH(writer.append(step), Contains("step.centerlines[1]") && Contains("5 × 3") && Contains("got 4 × 3"));
     step.centerlines.pop_back();
     CHECK_THROWS_WITH(writer.append(step), Contains("step.centerlines has 1 entries, expected 2 beams"));
+  }
+  SECTION("centerline fields") {
+    step.centerline_fields[1][1] = Eigen::MatrixXd::Zero(5, 1);
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerline_fields[1][1] (velocity)") && Contains("5 × 3") &&
+                                               Contains("got 5 × 1"));
+    step.centerline_fields[1].pop_back();
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerline_fields[1] has 1 entries, expected 2"));
+    step.centerline_fields.clear();
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerline_fields has 0 entries, expected 2 beams"));
   }
   SECTION("time") {
     step.time = SampleStep(0).step.time;
@@ -175,16 +202,31 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
     layout.centerline_points[0] = 1;
     CHECK_THROWS_WITH(ResultsWriter(folder.file("a.h5"), layout), Contains("layout.centerline_points[0] = 1"));
     layout = spar::test::sample_layout();
-    layout.scalar_names.push_back("kinetic_energy");
+    layout.scalars.push_back(layout.scalars[0]);
     CHECK_THROWS_WITH(ResultsWriter(folder.file("b.h5"), layout), Contains("\"kinetic_energy\" twice"));
     layout = spar::test::sample_layout();
-    layout.probe_names = {"a/b"};
+    layout.probes[0].name = "a/b";
     CHECK_THROWS_WITH(ResultsWriter(folder.file("c.h5"), layout), Contains("contains '/'"));
+    layout = spar::test::sample_layout();
+    layout.scalars[0].unit = "";
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("e.h5"), layout), Contains("\"kinetic_energy\" has no unit"));
+    layout = spar::test::sample_layout();
+    layout.probes[0].description = "";
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("f.h5"), layout), Contains("\"tip\" has no description"));
+    layout = spar::test::sample_layout();
+    layout.probes[0].integer = true;
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("g.h5"), layout), Contains("\"tip\" is marked integer"));
+    layout = spar::test::sample_layout();
+    layout.centerline_fields[1].components = 2;
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("h.h5"), layout), Contains("\"velocity\" has 2 components"));
+    layout = spar::test::sample_layout();
+    layout.centerline_fields[0].name = "s|t";
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("i.h5"), layout), Contains("\"s|t\" contains ':' or '|'"));
     CHECK_THROWS_WITH(ResultsWriter(folder.file("d.h5"), spar::test::sample_layout(), 0), Contains("flush_every = 0"));
   }
   SECTION("names taken and a closed file") {
     ResultsWriter writer(folder.file("run.h5"), layout);
-    CHECK_THROWS_WITH(writer.write_constant("time", Eigen::MatrixXd::Zero(1, 1)), Contains("already holds an object named time"));
+    CHECK_THROWS_WITH(writer.write_constant("time", Eigen::MatrixXd::Zero(1, 1), "s", "t"), Contains("already holds an object named time"));
     writer.close();
     CHECK_THROWS_WITH(writer.append(SampleStep(0).step), Contains("closed"));
     CHECK_THROWS_WITH(writer.write_attribute("x", 1.0), Contains("closed"));
@@ -202,4 +244,49 @@ TEST_CASE("A moved ResultsWriter keeps writing the same file", "[output]") {
   }
   const ReadOnlyFile file(path);
   check_round_trip(file, 2);
+}
+
+TEST_CASE("Every dataset states its units and meaning; strings are UTF-8; counters are integers", "[output]") {
+  const spar::test::ScratchFolder folder("units");
+  const std::string path = folder.file("run.h5");
+  {
+    ResultsWriter writer(path, spar::test::sample_layout(), 2);
+    writer.write_attribute("example", "pendule \u03c1\u221e = 1");  // ρ∞: not ASCII
+    writer.write_attribute("steps", std::int64_t{3'000'000'000});     // beyond 32 bits
+    for (int k = 0; k < 3; ++k) writer.append(SampleStep(k).step);
+    writer.write_constant("reference/centerline", Eigen::MatrixXd::Identity(4, 3), "m", "reference centerline");
+  }
+  const ReadOnlyFile file(path);
+  for (const char* name : {"schema", "example"}) {
+    const auto attribute = file.string_attribute_of("/", name);
+    INFO("attribute " << name);
+    CHECK(attribute.variable_length);
+    CHECK(attribute.utf8);
+  }
+  CHECK(file.string_attribute("example") == "pendule \u03c1\u221e = 1");
+  CHECK(file.integer_attribute("steps") == 3'000'000'000);
+
+  const std::vector<std::string> datasets = file.datasets();
+  // time, 4 node series, 2 scalars, 1 probe, 2 beams × (centerline, 2 fields), 3 topologies, 1 constant
+  CHECK(datasets.size() == 19);
+  for (const std::string& name : datasets) {
+    INFO("dataset " << name);
+    for (const char* key : {"units", "description"}) {
+      const auto attribute = file.string_attribute_of(name, key);
+      CHECK_FALSE(attribute.value.empty());
+      CHECK(attribute.variable_length);
+      CHECK(attribute.utf8);
+    }
+  }
+  CHECK(file.string_attribute_of("/time", "units").value == "s");
+  CHECK(file.string_attribute_of("/scalars/kinetic_energy", "units").value == "J");
+  CHECK(file.string_attribute_of("/scalars/kinetic_energy", "description").value == "kinetic energy");
+  CHECK(file.string_attribute_of("/probes/tip", "units").value == "m");
+  CHECK(file.string_attribute_of("/reference/centerline", "units").value == "m");
+
+  using Type = std::pair<H5T_class_t, std::size_t>;
+  CHECK(file.dataset_type("/scalars/newton_iterations") == Type{H5T_INTEGER, 4});
+  CHECK(file.read("/scalars/newton_iterations").values == std::vector<double>{0, 1, 2});
+  CHECK(file.dataset_type("/scalars/kinetic_energy") == Type{H5T_FLOAT, 8});
+  CHECK(file.dataset_type("/xdmf/polyvertex") == Type{H5T_INTEGER, 4});
 }

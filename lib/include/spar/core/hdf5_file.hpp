@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// A minimal HDF5 results file: named double datasets (vectors and matrices, row-major as
-/// printed) and string/number attributes on the root group. Every write is followed by an
-/// H5Fflush, so a run that dies leaves a readable file with everything written so far.
+/// printed), each with its `units` and `description` attributes, and string/number attributes on
+/// the root group (strings variable-length UTF-8). Every write is followed by an H5Fflush, so a
+/// run that dies leaves a readable file with everything written so far.
 /// The schema of each example's file is in docs/output.md.
 
 #include <Eigen/Core>
@@ -19,9 +20,10 @@ public:
   Hdf5File(const Hdf5File&) = delete;
   Hdf5File& operator=(const Hdf5File&) = delete;
 
-  /// Writes `data` (rows × cols, stored row-major) as dataset `name`; groups in `name`
-  /// ("shape/positions") are created as needed.
-  void write(const std::string& name, const Eigen::MatrixXd& data);
+  /// Writes `data` (rows × cols, stored row-major) as dataset `name` with its `units` (e.g. "m";
+  /// "1" for ratios) and `description`; groups in `name` ("shape/positions") are created as needed.
+  void write(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
+             const std::string& description);
   /// A scalar attribute of the root group.
   void write_attribute(const std::string& name, double value);
   void write_attribute(const std::string& name, const std::string& value);

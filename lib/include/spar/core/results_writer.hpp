@@ -2,19 +2,42 @@
 /// \file
 /// The time-history results file of a simulation: one HDF5 file of extendible datasets (one row
 /// per step) and an XDMF sidecar that lets ParaView play the deforming beams as an animation.
-/// Steps are buffered and written in blocks, each followed by H5Fflush and a rewrite of the
-/// sidecar, so a run that dies keeps every step up to its last flush and both files still open.
+/// Steps are buffered and written in blocks, each followed by H5Fflush and an append of the
+/// block's steps to the sidecar, so a run that dies keeps every step up to its last flush and
+/// both files still open; a flush costs the same at step 100 and at step 10⁶.
 /// The schema (dataset names, shapes, units) is in docs/output.md, "Time histories".
 
 #include <spar/core/configuration.hpp>
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace spar::core {
+
+/// A per-step quantity: its dataset name, its unit and its meaning, stored with the dataset as
+/// its `units` and `description` attributes.
+struct ResultsQuantity {
+  std::string name;         ///< dataset name, e.g. kinetic_energy (no '/')
+  std::string unit;         ///< SI unit, e.g. "J", "m/s", "rad"; "1" for ratios and counts
+  std::string description;  ///< what it is, e.g. "kinetic energy of the rods and the slider"
+  /// Stored as 32-bit integers (counters such as newton_iterations); every value appended must
+  /// then be a whole number. Scalars only.
+  bool integer = false;
+};
+
+/// A quantity sampled at every centerline point of every beam, e.g. the velocity or the arc
+/// length: stored per step beside the centerlines and shown by the XDMF sidecar as point data of
+/// the beams, so ParaView can colour them by it.
+struct CenterlineField {
+  std::string name;         ///< dataset and ParaView array name, e.g. velocity (no '/', ':', '|')
+  std::string unit;         ///< SI unit, e.g. "m/s"; "1" for ratios
+  std::string description;  ///< what it is
+  int components = 1;       ///< 1 (a scalar per point) or 3 (a vector per point, inertial frame)
+};
 
 /// What every step of a run holds; fixed when the file is created.
 struct ResultsLayout {
@@ -25,13 +48,16 @@ struct ResultsLayout {
   bool velocities = true;
   /// Lagrange multipliers λ per step (0: none).
   int multiplier_count = 0;
-  /// Per-step scalars, e.g. kinetic_energy, strain_energy, total_energy, constraint_residual,
-  /// newton_iterations, factorizations, step_size.
-  std::vector<std::string> scalar_names;
-  /// Per-step 3-vectors, e.g. a material point's position.
-  std::vector<std::string> probe_names;
+  /// Per-step scalars, e.g. {.name = "kinetic_energy", .unit = "J", .description = "kinetic
+  /// energy of the rods"}, {.name = "newton_iterations", .unit = "1", .description = "Newton
+  /// iterations of the step", .integer = true}.
+  std::vector<ResultsQuantity> scalars;
+  /// Per-step 3-vectors, e.g. a material point's position in m.
+  std::vector<ResultsQuantity> probes;
   /// Per beam, the number of centerline points sampled at every step (≥ 2; the XDMF polylines).
   std::vector<int> centerline_points;
+  /// Point data of every beam's centerline points (none: the beams are bare polylines).
+  std::vector<CenterlineField> centerline_fields;
 };
 
 /// One step's data, borrowed for the duration of ResultsWriter::append.
@@ -40,9 +66,12 @@ struct ResultsStep {
   const Configuration* configuration = nullptr;   ///< node_count nodes, or nullptr if node_count = 0
   const Eigen::VectorXd* velocity = nullptr;      ///< 6 per node, or nullptr if the layout has none
   const Eigen::VectorXd* multipliers = nullptr;   ///< multiplier_count entries, or nullptr if 0
-  std::vector<double> scalars;                    ///< in scalar_names order
-  std::vector<Eigen::Vector3d> probes;            ///< in probe_names order
+  std::vector<double> scalars;                    ///< in layout.scalars order
+  std::vector<Eigen::Vector3d> probes;            ///< in layout.probes order
   std::vector<Eigen::MatrixXd> centerlines;       ///< per beam, centerline_points[k] × 3
+  /// Per beam, one matrix per layout.centerline_fields entry (in its order): centerline_points[k]
+  /// rows of `components` values, one row per centerline point; empty if the layout has none.
+  std::vector<std::vector<Eigen::MatrixXd>> centerline_fields;
 };
 
 /// Writes a run's time histories into `<name>.h5` and its XDMF sidecar `<name>.xmf`.
@@ -61,18 +90,23 @@ public:
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
 
-  /// Run metadata: a scalar attribute of the root group (replaced if it exists), flushed at once.
+  /// Run metadata: a scalar attribute of the root group (replaced if it exists), flushed at once:
+  /// a double, a 64-bit integer (counters such as steps or factorizations) or a variable-length
+  /// UTF-8 string (h5py reads str). State the unit in the name or in docs/output.md.
   void write_attribute(const std::string& name, double value);
+  void write_attribute(const std::string& name, std::int64_t value);
+  void write_attribute(const std::string& name, int value) { write_attribute(name, std::int64_t{value}); }
   void write_attribute(const std::string& name, const std::string& value);
-  /// A constant dataset `name` (rows × cols, row-major; a column vector is stored 1-D), e.g. the
-  /// reference geometry or the solver counters at the end; groups in `name` are created. Throws
-  /// spar::Error if `name` already exists (every time-history name is taken from the start).
-  void write_constant(const std::string& name, const Eigen::MatrixXd& data);
+  /// A constant dataset `name` (rows × cols, row-major; a column vector is stored 1-D) with its
+  /// `units` and `description`, e.g. the reference geometry; groups in `name` are created.
+  /// Throws spar::Error if `name` already exists (every time-history name is taken from the start).
+  void write_constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
+                      const std::string& description);
   /// Buffers one step after checking it against the layout (spar::Error naming the field and the
   /// expected size) and that time increases; writes the block when flush_every steps are buffered.
   void append(const ResultsStep& step);
-  /// Writes the buffered steps, H5Fflush-es the file and rewrites the sidecar, so both are
-  /// readable now with every appended step.
+  /// Writes the buffered steps, H5Fflush-es the file and appends them to the sidecar, so both
+  /// are readable now with every appended step.
   void flush();
   /// Flushes and closes the file; later calls do nothing, append/write_* then throw.
   void close();

@@ -1,0 +1,152 @@
+#include "xdmf_sidecar.hpp"
+
+#include <spar/error.hpp>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <utility>
+
+namespace spar::core::detail {
+
+namespace {
+
+const std::string header =
+    "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+    "  <Grid Name=\"results\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+const std::string closing_tags = "  </Grid>\n </Domain>\n</Xdmf>\n";
+
+/// The shortest decimal text that reads back as the same double.
+std::string format_double(double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+/// `text` with the XML special characters replaced by entities.
+std::string xml_escape(const std::string& text) {
+  std::string result;
+  for (char c : text) {
+    switch (c) {
+      case '&': result += "&amp;"; break;
+      case '<': result += "&lt;"; break;
+      case '>': result += "&gt;"; break;
+      case '"': result += "&quot;"; break;
+      default: result += c;
+    }
+  }
+  return result;
+}
+
+/// "a b c" from {a, b, c}.
+std::string join(const std::vector<int>& values) {
+  std::string text;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) text += ' ';
+    text += std::to_string(values[i]);
+  }
+  return text;
+}
+
+}  // namespace
+
+XdmfSidecar::XdmfSidecar(std::string xmf_path, const std::string& h5_name, ResultsLayout layout)
+    : path_(std::move(xmf_path)), h5_name_(xml_escape(h5_name)), layout_(std::move(layout)) {
+  const std::string where = "core::ResultsWriter, XDMF sidecar " + path_;
+  if (h5_name.find_first_of(":|") != std::string::npos)
+    throw Error("the results file's name " + h5_name + " contains ':' or '|', which XDMF references reserve", where,
+                "name the results file without ':' and '|'");
+  fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw Error(std::string("cannot create the sidecar: ") + std::strerror(errno), where,
+                "check that the output folder is writable");
+  write_at(header + closing_tags, 0);
+  body_end_ = static_cast<off_t>(header.size());
+}
+
+XdmfSidecar::~XdmfSidecar() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void XdmfSidecar::append(int first_step, const std::vector<double>& times, int rows) {
+  std::string grids;
+  for (std::size_t i = 0; i < times.size(); ++i)
+    grids += step_grid(first_step + static_cast<int>(i), times[i], rows);
+  if (grids.empty()) return;
+  write_at(grids + closing_tags, body_end_);
+  body_end_ += static_cast<off_t>(grids.size());
+}
+
+void XdmfSidecar::write_at(const std::string& text, off_t offset) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t written = ::pwrite(fd_, text.data() + done, text.size() - done, offset + static_cast<off_t>(done));
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0)
+      throw Error(std::string("cannot write the sidecar: ") + std::strerror(errno),
+                  "core::ResultsWriter::flush, XDMF sidecar " + path_,
+                  "check that the output folder is writable and the disk is not full");
+    done += static_cast<std::size_t>(written);
+  }
+}
+
+std::string XdmfSidecar::step_item(const std::string& dataset, int step, int rows, std::vector<int> shape, int taken,
+                                   const std::string& indent) const {
+  std::vector<int> start(shape.size() + 1, 0), stride(shape.size() + 1, 1), count{1}, dims{rows};
+  count.insert(count.end(), shape.begin(), shape.end());
+  dims.insert(dims.end(), shape.begin(), shape.end());
+  start[0] = step;
+  count.back() = taken;
+  shape.back() = taken;
+  return indent + "<DataItem Dimensions=\"" + join(shape) +
+         "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" + h5_name_ + ":" + dataset + "|" + join(start) +
+         ":" + join(stride) + ":" + join(count) + ":" + join(dims) + "</DataItem>\n";
+}
+
+std::string XdmfSidecar::step_grid(int step, double time, int rows) const {
+  std::string grid = "   <Grid Name=\"step" + std::to_string(step) + "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n" +
+                     "    <Time Value=\"" + format_double(time) + "\"/>\n";
+  for (std::size_t k = 0; k < layout_.centerline_points.size(); ++k) grid += beam_grid(step, k, rows);
+  if (layout_.node_count > 0) grid += nodes_grid(step, rows);
+  return grid + "   </Grid>\n";
+}
+
+std::string XdmfSidecar::beam_grid(int step, std::size_t beam, int rows) const {
+  const int p = layout_.centerline_points[beam];
+  const std::string k = std::to_string(beam), points = std::to_string(p);
+  std::string grid =
+      "    <Grid Name=\"beam" + k + "\" GridType=\"Uniform\">\n" +
+      "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"1\" NodesPerElement=\"" + points + "\">\n" +
+      "      <DataItem Dimensions=\"1 " + points + "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + h5_name_ +
+      ":/xdmf/polyline" + k + "</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
+      step_item("/centerlines/beam" + k, step, rows, {p, 3}, 3, "      ") + "     </Geometry>\n";
+  for (const CenterlineField& field : layout_.centerline_fields) {
+    const bool vector = field.components > 1;
+    const std::vector<int> shape = vector ? std::vector<int>{p, field.components} : std::vector<int>{p};
+    grid += "     <Attribute Name=\"" + xml_escape(field.name) + "\" AttributeType=\"" + (vector ? "Vector" : "Scalar") +
+            "\" Center=\"Node\">\n" +
+            step_item("/centerline_fields/" + xml_escape(field.name) + "/beam" + k, step, rows, shape, shape.back(),
+                      "      ") +
+            "     </Attribute>\n";
+  }
+  return grid + "    </Grid>\n";
+}
+
+std::string XdmfSidecar::nodes_grid(int step, int rows) const {
+  const int n = layout_.node_count;
+  std::string grid = "    <Grid Name=\"nodes\" GridType=\"Uniform\">\n     <Topology TopologyType=\"Polyvertex\" "
+                     "NumberOfElements=\"" + std::to_string(n) + "\" NodesPerElement=\"1\">\n" +
+                     "      <DataItem Dimensions=\"" + std::to_string(n) +
+                     "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + h5_name_ +
+                     ":/xdmf/polyvertex</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
+                     step_item("/positions", step, rows, {n, 3}, 3, "      ") + "     </Geometry>\n";
+  if (layout_.velocities)
+    grid += "     <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n" +
+            step_item("/velocities", step, rows, {n, 6}, 3, "      ") + "     </Attribute>\n";
+  return grid + "    </Grid>\n";
+}
+
+}  // namespace spar::core::detail

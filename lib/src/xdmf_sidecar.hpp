@@ -1,0 +1,57 @@
+#pragma once
+/// \file
+/// The XDMF sidecar of a results file (docs/output.md, "XDMF sidecar"): an XDMF 3 temporal
+/// collection that ParaView's default reader (XDMF3) plays as an animation of the beams'
+/// centerlines and the nodes. Every array is a hyperslab of the HDF5 file written in XDMF 3's
+/// own syntax, `file.h5:/dataset|start:stride:count:dimensions`, with its full Dimensions,
+/// NumberType, Precision and Format.
+///
+/// The document is appended in place: the writer remembers where the closing tags begin and, at
+/// each flush, writes the new steps' grids followed by the closing tags there in one pwrite. A
+/// flush therefore costs O(steps since the last flush), whatever the length of the run, and the
+/// file is complete XML after every flush, with no temporary file beside it.
+
+#include <spar/core/results_writer.hpp>
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace spar::core::detail {
+
+class XdmfSidecar {
+public:
+  /// Creates (truncates) `xmf_path` as an empty temporal collection whose heavy data are in the
+  /// HDF5 file `h5_name` (its name relative to the sidecar). Throws spar::Error if the file
+  /// cannot be created or `h5_name` holds a character the XDMF reference syntax reserves.
+  XdmfSidecar(std::string xmf_path, const std::string& h5_name, ResultsLayout layout);
+  /// Closes the file descriptor; what was written stays.
+  ~XdmfSidecar();
+  XdmfSidecar(const XdmfSidecar&) = delete;
+  XdmfSidecar& operator=(const XdmfSidecar&) = delete;
+
+  /// Appends the grids of steps first_step, first_step + 1, … (one per entry of `times`), whose
+  /// data are on disk in datasets of `rows` steps, then the closing tags, in one write at the
+  /// offset of the previous closing tags.
+  void append(int first_step, const std::vector<double>& times, int rows);
+
+private:
+  std::string step_grid(int step, double time, int rows) const;
+  std::string beam_grid(int step, std::size_t beam, int rows) const;
+  std::string nodes_grid(int step, int rows) const;
+  /// A DataItem reading step `step` of `dataset` (rows × shape, doubles): the first `taken`
+  /// entries of its last dimension.
+  std::string step_item(const std::string& dataset, int step, int rows, std::vector<int> shape, int taken,
+                        const std::string& indent) const;
+  /// Writes `text` at `offset`, all of it; throws spar::Error naming the sidecar on failure.
+  void write_at(const std::string& text, off_t offset);
+
+  std::string path_;
+  std::string h5_name_;  ///< XML-escaped
+  ResultsLayout layout_;
+  int fd_ = -1;
+  off_t body_end_ = 0;  ///< where the closing tags begin
+};
+
+}  // namespace spar::core::detail
