@@ -34,7 +34,7 @@ inline Eigen::MatrixXd centerline_velocity(const core::GeometricallyExactBeam& b
                                            const Eigen::VectorXd& velocity, int points) {
   core::Configuration rates = q;
   for (int I = 0; I < beam.control_point_count(); ++I)
-    rates.position[beam.node(I)] = velocity.segment<3>(core::dofs_per_node * beam.node(I));
+    rates.position[beam.node(I)] = velocity.segment<3>(q.blocks[beam.node(I)].offset);
   return beam.sample_centerline(rates, points);
 }
 

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <map>
 #include <sstream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -103,6 +104,10 @@ public:
   JsonSummary& add(const std::string& key, int value) { return append(key, std::to_string(value)); }
   JsonSummary& add(const std::string& key, const std::string& value) {
     return append(key, "\"" + value + "\"");
+  }
+  /// A number that may be missing (e.g. a value at a time the run did not reach): null then.
+  JsonSummary& add(const std::string& key, const std::optional<double>& value) {
+    return value ? add(key, *value) : append(key, "null");
   }
   void print() const { std::printf("{%s}\n", body_.c_str()); }
 

@@ -25,6 +25,7 @@
 
 #include <centerline_fields.hpp>
 #include <cli.hpp>
+#include <energy_balance.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -102,21 +103,17 @@ int main(int argc, char** argv) try {
                                        {.time_step = h, .spectral_radius = rho_infinity, .tolerance = tolerance,
                                         .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8});
   integrator.initialize();
+  const core::Configuration initial_state = model.state();  // the reference geometry, for arc lengths
   const double initial_energy = integrator.energies().total();
 
   // 5. Integrate and record.
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
-  const Eigen::MatrixXd arc_length = examples::reference_arc_length(rod, model.reference(), samples);
+  const Eigen::MatrixXd arc_length = examples::reference_arc_length(rod, initial_state, samples);
   core::ResultsWriter results(out + "/flexible_pendulum.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
-                               .scalars = {{.name = "kinetic_energy", .unit = "J",
-                                            .description = "kinetic energy of the rule"},
-                                           {.name = "strain_energy", .unit = "J",
-                                            .description = "strain energy of the rule"},
-                                           {.name = "gravity_potential", .unit = "J",
-                                            .description = "potential of gravity, -sum m g . x (zero at the pin)"},
+                               .scalars = examples::followed_by<core::ResultsQuantity>({
                                            {.name = "total_energy", .unit = "J",
                                             .description = "kinetic + strain energy + gravity potential"},
                                            {.name = "energy_drift", .unit = "1",
@@ -130,6 +127,7 @@ int main(int argc, char** argv) try {
                                            {.name = "newton_iterations", .unit = "1",
                                             .description = "Newton iterations (linear solves) of the step",
                                             .integer = true}},
+                                           examples::energy_balance_layout()),
                                .probes = {{.name = "tip", .unit = "m",
                                            .description = "the rule's free end x(u = 1), inertial frame"}},
                                .centerline_points = {samples},
@@ -157,8 +155,10 @@ int main(int argc, char** argv) try {
         << drift << ',' << residual << ',' << integrator.last_step_iterations() << '\n';
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
-                    .scalars = {energy.kinetic, energy.strain, energy.gravity, energy.total(), drift,
-                                deflection, residual, static_cast<double>(integrator.last_step_iterations())},
+                    .scalars = examples::followed_by<double>(
+                        {energy.total(), drift, deflection, residual,
+                         static_cast<double>(integrator.last_step_iterations())},
+                        examples::energy_balance_values(energy)),
                     .probes = {tip},
                     .centerlines = {rod.sample_centerline(q, samples)},
                     .centerline_fields = {examples::centerline_fields(rod, arc_length, q, integrator.velocity())}});

@@ -22,6 +22,7 @@
 #include <spar/joints/joints.hpp>
 
 #include <cli.hpp>
+#include <energy_balance.hpp>
 
 #include "reference.hpp"
 
@@ -83,10 +84,7 @@ int main(int argc, char** argv) try {
   core::ResultsWriter results(out + "/heavy_top.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
-                               .scalars = {{.name = "kinetic_energy", .unit = "J",
-                                            .description = "kinetic energy of the top"},
-                                           {.name = "gravity_potential", .unit = "J",
-                                            .description = "potential of gravity, -m g . x (zero at the fixed point)"},
+                               .scalars = examples::followed_by<core::ResultsQuantity>({
                                            {.name = "total_energy", .unit = "J",
                                             .description = "kinetic energy + gravity potential"},
                                            {.name = "rotation_error", .unit = "rad",
@@ -98,6 +96,7 @@ int main(int argc, char** argv) try {
                                            {.name = "newton_iterations", .unit = "1",
                                             .description = "Newton iterations (linear solves) of the step",
                                             .integer = true}},
+                                           examples::energy_balance_layout()),
                                .probes = {{.name = "reference_center_of_mass", .unit = "m",
                                            .description = "the centre of mass of the RK4 reference, inertial frame"}}});
   results.write_attribute("example", "heavy_top (Bruls, Cardona & Arnold 2012, section 5.1)");
@@ -117,7 +116,7 @@ int main(int argc, char** argv) try {
     const solvers::Energies energy = integrator.energies();
     drift = (energy.total() - initial_energy) / initial_energy;
     const double residual = integrator.constraint_residual();
-    const Eigen::Vector3d omega = integrator.velocity().segment<3>(6 * body + 3);
+    const Eigen::Vector3d omega = integrator.velocity().segment<3>(q.blocks[body].offset + 3);
     omega_error = (omega - exact.angular_velocity).norm();
     max_rotation_error = std::max(max_rotation_error, rotation_error);
     max_position_error = std::max(max_position_error, position_error);
@@ -130,8 +129,10 @@ int main(int argc, char** argv) try {
         << energy.total() << ',' << drift << ',' << residual << ',' << integrator.last_step_iterations() << '\n';
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
-                    .scalars = {energy.kinetic, energy.gravity, energy.total(), rotation_error,
-                                position_error, residual, static_cast<double>(integrator.last_step_iterations())},
+                    .scalars = examples::followed_by<double>(
+                        {energy.total(), rotation_error, position_error, residual,
+                         static_cast<double>(integrator.last_step_iterations())},
+                        examples::energy_balance_values(energy)),
                     .probes = {x_ref}});
   };
   record();

@@ -22,6 +22,7 @@
 
 #include <centerline_fields.hpp>
 #include <cli.hpp>
+#include <energy_balance.hpp>
 
 #include "slider_crank_model.hpp"
 
@@ -29,6 +30,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 using namespace spar;
 
@@ -68,15 +70,17 @@ int main(int argc, char** argv) try {
        .residual_tolerance = residual_tolerance, .max_iterations = max_iterations,
        .linear_solver = solvers::linear_solver_kind_from_string(solver)});
   integrator.initialize();
+  const core::Configuration initial_state = model.state();  // the reference geometry, for arc lengths
 
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;  // centerline points per rod in the results file
-  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank, model.reference(), samples);
-  const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler, model.reference(), samples);
+  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank, initial_state, samples);
+  const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler, initial_state, samples);
   core::ResultsWriter results(out + "/slider_crank.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
-                               .scalars = {{.name = "rod2_deformation_rate", .unit = "1",
+                               .scalars = examples::followed_by<core::ResultsQuantity>({
+                                           {.name = "rod2_deformation_rate", .unit = "1",
                                             .description = "Rod II's midpoint distance from its chord's midpoint "
                                                            "over its length, a fraction (0.05 = 5 %, 003 Fig. 3)"},
                                            {.name = "rod1_angular_speed", .unit = "rad/s",
@@ -84,12 +88,6 @@ int main(int argc, char** argv) try {
                                                            "its chord r = tip - root, (r x r')_z / |r|^2"},
                                            {.name = "slider_position", .unit = "m",
                                             .description = "the slider's x coordinate"},
-                                           {.name = "kinetic_energy", .unit = "J",
-                                            .description = "kinetic energy of the rods and the slider"},
-                                           {.name = "strain_energy", .unit = "J",
-                                            .description = "strain energy of the rods"},
-                                           {.name = "gravity_potential", .unit = "J",
-                                            .description = "potential of gravity, -sum m g . x (zero at the origin)"},
                                            {.name = "constraint_residual", .unit = "m",
                                             .description = "largest constraint violation |Phi|_inf after the step "
                                                            "(position rows in m; the slider's rotation-lock rows "
@@ -97,6 +95,7 @@ int main(int argc, char** argv) try {
                                            {.name = "newton_iterations", .unit = "1",
                                             .description = "Newton iterations (linear solves) of the step",
                                             .integer = true}},
+                                           examples::energy_balance_layout()),
                                .probes = {{.name = "rod2_midpoint", .unit = "m",
                                            .description = "Rod II's midpoint x(u = 1/2), inertial frame"},
                                           {.name = "rod1_tip", .unit = "m",
@@ -111,6 +110,7 @@ int main(int argc, char** argv) try {
   csv << "t,rod2_deformation_rate,rod1_angular_speed,slider_x,rod2_mid_x,rod2_mid_y,rod2_mid_z,"
          "constraint_residual,newton_iterations\n";
   double max_speed = 0.0, max_rate = 0.0, max_residual = 0.0;
+  std::optional<double> slider_x_at_0_1;  // the slider at t = 0.1 s, to compare runs and engines
   auto record = [&]() {
     const core::Configuration& q = model.state();
     const double rate = examples::deformation_rate(coupler, q, length_2);
@@ -118,12 +118,13 @@ int main(int argc, char** argv) try {
     // r = x_tip − x_root. (The root section's own angular velocity carries the high-frequency
     // local vibration that the concentrated moment excites in a section of tiny rotary inertia.)
     const Eigen::Vector3d chord = q.position[crank_tip] - q.position[crank_root];
-    const Eigen::Vector3d chord_rate = integrator.velocity().segment<3>(6 * crank_tip) -
-                                       integrator.velocity().segment<3>(6 * crank_root);
+    const Eigen::Vector3d chord_rate = integrator.velocity().segment<3>(q.blocks[crank_tip].offset) -
+                                       integrator.velocity().segment<3>(q.blocks[crank_root].offset);
     const double speed = chord.cross(chord_rate).z() / chord.squaredNorm();
     const double residual = integrator.constraint_residual();
     const solvers::Energies energy = integrator.energies();
     const Eigen::Vector3d midpoint = coupler.position_at(q, 0.5);
+    if (std::abs(integrator.time() - 0.1) <= 0.5 * h) slider_x_at_0_1 = q.position[slider].x();
     max_speed = std::max(max_speed, std::abs(speed));
     max_rate = std::max(max_rate, rate);
     max_residual = std::max(max_residual, residual);
@@ -132,8 +133,10 @@ int main(int argc, char** argv) try {
         << integrator.last_step_iterations() << '\n';
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
-                    .scalars = {rate, speed, q.position[slider].x(), energy.kinetic, energy.strain,
-                                energy.gravity, residual, static_cast<double>(integrator.last_step_iterations())},
+                    .scalars = examples::followed_by<double>(
+                        {rate, speed, q.position[slider].x(), residual,
+                         static_cast<double>(integrator.last_step_iterations())},
+                        examples::energy_balance_values(energy)),
                     .probes = {midpoint, q.position[crank_tip]},
                     .centerlines = {crank.sample_centerline(q, samples), coupler.sample_centerline(q, samples)},
                     .centerline_fields = {
@@ -172,6 +175,9 @@ int main(int argc, char** argv) try {
       .add("cutbacks", static_cast<int>(counters.cutbacks))
       .add("wall_s", counters.wall_seconds).add("max_rod1_speed", max_speed)
       .add("max_rod2_deformation_rate", max_rate).add("max_constraint_residual", max_residual)
+      .add("slider_x_at_0_1", slider_x_at_0_1)
+      .add("external_work", integrator.energies().external_work)
+      .add("numerical_dissipation", integrator.energies().numerical_dissipation)
       .print();
   return 0;
 } catch (const std::exception& error) {

@@ -4,10 +4,16 @@
 //
 // 1. The stored velocities are the rate of the stored configuration: for every node and step,
 //    the secant rate s = (x_{n+1} − x_n)/h (translations) and s = log(R_nᵀ R_{n+1})/h (rotations,
-//    material, as Ω is) agrees with the mean m = ½(v_n + v_{n+1}) to O(h):
-//        |s − m| ≤ |v_{n+1} − v_n| + 1e-3 (|m| + 1),
-//    since for a smooth motion s − m = O(h² v̈) while v_{n+1} − v_n = O(h v̈). An aliased rotation
-//    increment (2πk added to h|Ω|) breaks it by 2πk/h.
+//    material, as Ω is) agrees with the mean m = ½(v_n + v_{n+1}):
+//        |s − m| ≤ max(|v_n − v_{n−1}|, |v_{n+1} − v_n|, |v_{n+2} − v_{n+1}|) + 0.05 |m| + 0.01 V,
+//    V the largest stored speed of that kind (translation or rotation) in the run. Generalized-α
+//    gives s − m = h(γ/2 − β)(a_n − a_{n+1}) exactly (|γ/2 − β| = 1.3e-3 at ρ∞ = 0.9), small
+//    against h|a|, which the velocity changes measure. Where a mode the step cannot resolve rings
+//    (ωh ≫ 1: the slider-crank's root section, its tiny rotary inertia hit by the drive at t = 0),
+//    the stored velocity alternates from step to step while the secant averages the ringing out;
+//    the neighbouring changes are then as large as the mismatch, and the bound admits it. An
+//    aliased rotation increment (2πk added to h|Ω|) shifts the velocity for good, with small
+//    changes between steps, and breaks the bound by 2πk/h ≫ V.
 // 2. The energy balance holds step by step: the numerical dissipation D (docs/dynamics.md D8)
 //    changes in one step by at most 1 % of the run's energy scale max(T + |Π| + |V_g| + |W_ext|).
 //
@@ -75,6 +81,11 @@ int main(int argc, char** argv) try {
   if (steps < 3 || nodes == 0) return fail("fewer than 3 steps or no nodes");
 
   // 1. Velocities against the rate of the configuration.
+  double speed_scale[2] = {0.0, 0.0};  // largest stored |ẋ| and |Ω|
+  for (std::size_t k = 0; k < steps * nodes; ++k)
+    for (int part = 0; part < 2; ++part)
+      speed_scale[part] = std::max(speed_scale[part],
+                                   Eigen::Vector3d(&velocities.values[6 * k + 3 * part]).norm());
   double worst_ratio = 0.0;
   for (std::size_t s = 0; s + 1 < steps; ++s) {
     const double h = time.values[s + 1] - time.values[s];
@@ -91,10 +102,12 @@ int main(int argc, char** argv) try {
       secant.head<3>() = (x(s + 1) - x(s)) / h;
       secant.tail<3>() = spar::lie::log(Eigen::Matrix3d(R(s).transpose() * R(s + 1))) / h;
       const Eigen::Matrix<double, 6, 1> mean = 0.5 * (v(s) + v(s + 1));
-      const Eigen::Matrix<double, 6, 1> change = v(s + 1) - v(s);
       for (int part = 0; part < 2; ++part) {
+        double change = 0.0;  // the largest velocity change of the three steps around this one
+        for (std::size_t a = (s > 0 ? s - 1 : s); a <= std::min(s + 1, steps - 2); ++a)
+          change = std::max(change, (v(a + 1) - v(a)).segment<3>(3 * part).norm());
         const double error = (secant - mean).segment<3>(3 * part).norm();
-        const double allowed = change.segment<3>(3 * part).norm() + 1e-3 * (mean.segment<3>(3 * part).norm() + 1);
+        const double allowed = change + 0.05 * mean.segment<3>(3 * part).norm() + 0.01 * speed_scale[part];
         worst_ratio = std::max(worst_ratio, error / allowed);
         if (error > allowed) {
           char what[256];
