@@ -194,6 +194,18 @@ struct GeneralizedAlpha::Implementation {
 
   /// M v̇₀ + Bᵀλ₀ = −(f_qv + f_int − f_ext), B v̇₀ = −c(q₀, v₀, 0).
   void initialize() {
+    consistent_accelerations();
+    if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
+    // The balance starts here: energies and powers at t = 0 with the consistent accelerations.
+    evaluate(t, nullptr, 1.0);
+    initial_energy = mechanical_energy();
+    last_power = power();
+    initialized = true;
+  }
+
+  /// v̇ and λ consistent with the equations at the current (q, v, t), and a = v̇: the method's
+  /// start at t = 0, and its restart after an event changed the equations.
+  void consistent_accelerations() {
     acceleration.setZero();
     lambda.setZero();
     const MatrixCoefficients mass_only{.mass = 1.0, .damping = 0.0, .stiffness = 0.0};
@@ -216,12 +228,6 @@ struct GeneralizedAlpha::Implementation {
     if (!solution.allFinite())
       throw Error("the initial accelerations are not finite", "solvers::GeneralizedAlpha::initialize",
                   "check the model's masses, loads and initial velocities for NaN or infinite values");
-    if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
-    // The balance starts here: energies and powers at t = 0 with the consistent accelerations.
-    evaluate(t, nullptr, 1.0);
-    initial_energy = mechanical_energy();
-    last_power = power();
-    initialized = true;
   }
 
   double mechanical_energy() const {
@@ -398,17 +404,25 @@ struct GeneralizedAlpha::Implementation {
   // Structure changes ----------------------------------------------------------------------------
 
   /// After a converged step: let the constraints switch at their events, and rebuild when they or
-  /// the model changed the structure.
+  /// the model changed the structure. After an event the method restarts from accelerations
+  /// consistent with the new equations: the algorithmic acceleration a is an O(h)-shifted mean of
+  /// v̇ under the old equations (a released mass would keep its pendulum's), and carrying it
+  /// across makes every later step first-order accurate.
   void handle_events() {
-    bool changed = model.structure_version() != structure_version;
+    bool changed = model.structure_version() != structure_version, event = false;
     for (auto& constraint : constraints) {
       std::string description;
       if (constraint->update_structure(model.state(), velocity, t, description)) {
-        changed = true;
+        changed = event = true;
         events.emplace_back(t, description);
       }
     }
-    if (changed) rebuild(nullptr);
+    if (!changed) return;
+    rebuild(nullptr);
+    if (!event) return;
+    consistent_accelerations();
+    evaluate(t, nullptr, 1.0);
+    last_power = power();
   }
 
   /// Rebuilds the pattern and the symbolic factorization; carries v, v̇, a through P (if the dof

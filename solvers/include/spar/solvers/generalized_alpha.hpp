@@ -132,7 +132,9 @@ public:
 
   /// Structure changes (docs/model.md, "Structure changes"). The integrator rebuilds its sparse
   /// pattern and symbolic factorization by itself after a step in which a constraint's
-  /// update_structure() reported a change or the model's structure_version() moved. When blocks
+  /// update_structure() reported a change or the model's structure_version() moved; after a
+  /// constraint's event it also restarts the method from v̇ and λ consistent with the new
+  /// equations (a = v̇, as at t = 0), which keeps it second order across the event. When blocks
   /// were split or merged (Model::replace_state), call remap with the linear map P (new dofs ×
   /// old dofs) that carries velocities, accelerations and the algorithmic acceleration across:
   /// v ← P v, v̇ ← P v̇, a ← P a. Multipliers of constraints whose equation count is unchanged are
