@@ -379,6 +379,39 @@ struct GeneralizedAlpha::Implementation {
     }
   }
 
+  // The start of the user's step, restored when the whole step fails (buffers kept across steps).
+  core::Configuration step_start;
+  Eigen::VectorXd step_velocity, step_acceleration, step_algorithmic_acceleration, step_lambda;
+
+  /// One step of options.time_step, all or nothing: when it fails even after the cut-backs (or
+  /// anything in it throws), state, velocities, accelerations, multipliers, time and energy
+  /// balance are restored to the step's start, so no converged sub-step of it is left behind.
+  void whole_step() {
+    step_start = model.state();
+    step_velocity = velocity;
+    step_acceleration = acceleration;
+    step_algorithmic_acceleration = algorithmic_acceleration;
+    step_lambda = lambda;
+    const double t0 = t, work0 = external_work, power0 = last_power;
+    const long steps0 = counters.steps;
+    try {
+      advance(options.time_step, 0);
+    } catch (...) {
+      model.state() = step_start;
+      velocity = step_velocity;
+      acceleration = step_acceleration;
+      algorithmic_acceleration = step_algorithmic_acceleration;
+      lambda = step_lambda;
+      t = t0;
+      external_work = work0;
+      last_power = power0;
+      counters.steps = steps0;
+      refactor_requested = true;
+      evaluate(t, nullptr, 1.0);  // the energies and residual of the restored state
+      throw;
+    }
+  }
+
   void advance(double h, int depth) {
     // The predictor that converged last is tried first, the other one next.
     const Predictor other = (predictor == Predictor::extrapolated) ? Predictor::velocity_only
@@ -512,7 +545,7 @@ void GeneralizedAlpha::initialize() {
 void GeneralizedAlpha::step() {
   if (!impl_->initialized) initialize();
   const auto start = std::chrono::steady_clock::now();
-  impl_->advance(impl_->options.time_step, 0);
+  impl_->whole_step();
   impl_->handle_events();
   impl_->counters.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

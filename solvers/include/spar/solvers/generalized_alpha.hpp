@@ -112,7 +112,8 @@ public:
   void initialize();
   /// Advances by one time step (in halves, recursively, if Newton fails). Throws spar::Error
   /// naming the step, the time and the likely cause when even max_cutbacks halvings fail; the
-  /// state is then the last converged one.
+  /// state, velocities, accelerations, multipliers and time are then those before the call (no
+  /// converged half-step of the failed step is kept).
   void step();
 
   double time() const;
