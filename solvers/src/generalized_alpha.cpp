@@ -436,6 +436,20 @@ struct GeneralizedAlpha::Implementation {
 
   // Structure changes ----------------------------------------------------------------------------
 
+  /// Blocks or elements the user changed since the last step (Model::replace_element,
+  /// add_element, replace_state with the same dofs) are taken in before the next step: an element
+  /// evaluated through a stale pattern would add its rows to another element's dofs. A new number
+  /// of dofs needs remap(P) first, which carries the state across.
+  void take_structure_changes() {
+    if (model.structure_version() == structure_version) return;
+    if (model.dof_count() != assembly.dof_count())
+      throw Error("the model now has " + std::to_string(model.dof_count()) + " dofs, the integrator's state " +
+                      std::to_string(assembly.dof_count()),
+                  "solvers::GeneralizedAlpha::step",
+                  "after Model::replace_state, call remap(P) with P of (new dofs) x (old dofs)");
+    rebuild(nullptr);
+  }
+
   /// After a converged step: let the constraints switch at their events, and rebuild when they or
   /// the model changed the structure. After an event the method restarts from accelerations
   /// consistent with the new equations: the algorithmic acceleration a is an O(h)-shifted mean of
@@ -543,6 +557,7 @@ void GeneralizedAlpha::initialize() {
 }
 
 void GeneralizedAlpha::step() {
+  impl_->take_structure_changes();
   if (!impl_->initialized) initialize();
   const auto start = std::chrono::steady_clock::now();
   impl_->whole_step();
@@ -550,14 +565,22 @@ void GeneralizedAlpha::step() {
   impl_->counters.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void GeneralizedAlpha::remap(const Eigen::MatrixXd& P) {
+void GeneralizedAlpha::remap(const Eigen::MatrixXd& P, const Eigen::VectorXd& increment_units) {
   const int new_dofs = impl_->model.dof_count();
+  const char* where = "solvers::GeneralizedAlpha::remap";
   if (P.rows() != new_dofs || P.cols() != impl_->assembly.dof_count() || !P.allFinite())
     throw Error("the map is " + std::to_string(P.rows()) + "x" + std::to_string(P.cols()) +
                     ", expected " + std::to_string(new_dofs) + "x" +
                     std::to_string(impl_->assembly.dof_count()) + " with finite entries",
-                "solvers::GeneralizedAlpha::remap",
-                "give P as (new dofs) x (old dofs), after Model::replace_state");
+                where, "give P as (new dofs) x (old dofs), after Model::replace_state");
+  // The old units belong to the old layout: a run with units needs the new layout's.
+  if (impl_->options.increment_units.size() != 0 || increment_units.size() != 0) {
+    if (increment_units.size() != new_dofs || !(increment_units.array() > 0.0).all() || !increment_units.allFinite())
+      throw Error("increment_units for the new layout has " + std::to_string(increment_units.size()) + " entries for " +
+                      std::to_string(new_dofs) + " dofs, or an entry that is not positive and finite",
+                  where, "give one positive unit per dof of the new layout (the run uses increment_units)");
+    impl_->options.increment_units = increment_units;
+  }
   impl_->rebuild(&P);
 }
 

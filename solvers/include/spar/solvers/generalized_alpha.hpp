@@ -139,8 +139,12 @@ public:
   /// were split or merged (Model::replace_state), call remap with the linear map P (new dofs ×
   /// old dofs) that carries velocities, accelerations and the algorithmic acceleration across:
   /// v ← P v, v̇ ← P v̇, a ← P a. Multipliers of constraints whose equation count is unchanged are
-  /// kept; the others start from zero (an index-3 multiplier has no history in the method).
-  void remap(const Eigen::MatrixXd& P);
+  /// kept; the others start from zero (an index-3 multiplier has no history in the method). A run
+  /// with DynamicOptions::increment_units needs the new layout's units, one per new dof (they
+  /// replace the old ones; refused when missing or misfitting). An element or block changed
+  /// without a new dof count is taken in by the next step() itself; a new dof count without
+  /// remap is refused there.
+  void remap(const Eigen::MatrixXd& P, const Eigen::VectorXd& increment_units = {});
   /// The events of the run so far (time and what the constraint said), in order.
   const std::vector<std::pair<double, std::string>>& events() const;
 
