@@ -107,6 +107,7 @@ TEST_CASE("a pendulum released by its rod flies the ballistic parabola of its re
     // whose rod never releases).
     REQUIRE(integrator.events().size() == 1);
     CHECK(integrator.events()[0].first == integrator.time());
+    CHECK_THAT(integrator.events()[0].second, Catch::Contains("rod released"));
     CHECK(integrator.counters().pattern_builds == 2);
     CHECK(integrator.multiplier_count() == 0);
     CHECK(held->integrator->counters().pattern_builds == 1);
