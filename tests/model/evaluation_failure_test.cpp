@@ -8,11 +8,13 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <memory>
 
 #include "coordinate_limit.hpp"
 #include "linear_spring.hpp"
 #include "point_mass.hpp"
+#include "saturating_tether.hpp"
 
 using namespace spar;
 
@@ -156,4 +158,32 @@ TEST_CASE("solve_static that fails after every cut-back leaves the last converge
   CHECK(std::abs(x(0)) < 1e-14);
   CHECK(std::abs(x(1)) < 1e-14);
   CHECK(x(2) == Approx(-(0.9 + 0.1 * last)).epsilon(1e-14));
+}
+
+TEST_CASE("a singular tangent at a static Newton iterate is a failed iteration, not a crash",
+          "[model][errors]") {
+  // A tether of strength T_max = 1 N under a load of 2.2 N: equilibria exist up to λ = 1/2.2 only
+  // (not a load factor the halvings of 0.1 reach, where tanh would round to 1 at a finite z).
+  // Past it Newton's iterates run away until the tangent is exactly zero: the load step must be
+  // cut back like any failed iteration, and the failure reported as a ConvergenceError with the
+  // model at the last equilibrium.
+  core::Model model;
+  const int block = model.add_vector(Eigen::VectorXd::Zero(1));
+  const test::SaturatingTetherParameters p{.block = block, .stiffness = 10.0, .max_tension = 1.0, .load = 2.2};
+  model.add_element(std::make_unique<test::SaturatingTether>(p));
+  solvers::StaticOptions options;
+  options.max_cutbacks = 6;
+  double last = -1.0;
+  try {
+    solvers::solve_static(model, options);
+    FAIL("solve_static found an equilibrium past the tether's strength");
+  } catch (const solvers::ConvergenceError& error) {
+    last = error.last_converged_load_factor();
+  }
+  CHECK(last >= 0.4);
+  CHECK(last < 1 / 2.2);
+  // The state is that equilibrium, not the runaway iterate: z = (T_max/k) atanh(2.2 λ). Newton
+  // stopped after an increment ≤ 1e-10 m, and its quadratic convergence leaves an error of the
+  // order of that increment squared times |K′/K| ≈ 10/m: far below 1e-12 m (measured 6e-17 m).
+  CHECK(std::abs(model.state().values(0) - test::SaturatingTether(p).equilibrium(last)) < 1e-12);
 }
