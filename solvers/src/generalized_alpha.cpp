@@ -88,7 +88,7 @@ struct GeneralizedAlpha::Implementation {
   int last_iterations = 0;
   std::string last_failure;  // why the last failed iteration failed, for the final message
   DynamicCounters counters;
-  // Energy balance (eq. D8): the work W_ext and the forces of the last accepted state.
+  // Energy balance (eq. D8).
   double initial_energy = 0.0, external_work = 0.0;
   Eigen::VectorXd last_work_force;
   std::vector<std::pair<double, std::string>> events;
@@ -195,6 +195,18 @@ struct GeneralizedAlpha::Implementation {
 
   /// M v̇₀ + Bᵀλ₀ = −(f_qv + f_int − f_ext), B v̇₀ = −c(q₀, v₀, 0).
   void initialize() {
+    consistent_accelerations();
+    if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
+    // The balance starts here: energies and forces at t = 0 with the consistent accelerations.
+    evaluate(t, nullptr, 1.0);
+    initial_energy = mechanical_energy();
+    last_work_force = work_force();
+    initialized = true;
+  }
+
+  /// v̇ and λ consistent with the equations at the current (q, v, t), and a = v̇: the method's
+  /// start at t = 0, and its restart after an event changed the equations.
+  void consistent_accelerations() {
     acceleration.setZero();
     lambda.setZero();
     const MatrixCoefficients mass_only{.mass = 1.0, .damping = 0.0, .stiffness = 0.0};
@@ -217,12 +229,6 @@ struct GeneralizedAlpha::Implementation {
     if (!solution.allFinite())
       throw Error("the initial accelerations are not finite", "solvers::GeneralizedAlpha::initialize",
                   "check the model's masses, loads and initial velocities for NaN or infinite values");
-    if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
-    // The balance starts here: energies and powers at t = 0 with the consistent accelerations.
-    evaluate(t, nullptr, 1.0);
-    initial_energy = mechanical_energy();
-    last_work_force = work_force();
-    initialized = true;
   }
 
   double mechanical_energy() const {
@@ -378,6 +384,40 @@ struct GeneralizedAlpha::Implementation {
     }
   }
 
+  // The start of the user's step, restored when the whole step fails (buffers kept across steps).
+  core::Configuration step_start;
+  Eigen::VectorXd step_velocity, step_acceleration, step_algorithmic_acceleration, step_lambda;
+
+  /// One step of options.time_step, all or nothing: when it fails even after the cut-backs (or
+  /// anything in it throws), state, velocities, accelerations, multipliers, time and energy
+  /// balance are restored to the step's start, so no converged sub-step of it is left behind.
+  void whole_step() {
+    step_start = model.state();
+    step_velocity = velocity;
+    step_acceleration = acceleration;
+    step_algorithmic_acceleration = algorithmic_acceleration;
+    step_lambda = lambda;
+    const double t0 = t, work0 = external_work;
+    const Eigen::VectorXd force0 = last_work_force;
+    const long steps0 = counters.steps;
+    try {
+      advance(options.time_step, 0);
+    } catch (...) {
+      model.state() = step_start;
+      velocity = step_velocity;
+      acceleration = step_acceleration;
+      algorithmic_acceleration = step_algorithmic_acceleration;
+      lambda = step_lambda;
+      t = t0;
+      external_work = work0;
+      last_work_force = force0;
+      counters.steps = steps0;
+      refactor_requested = true;
+      evaluate(t, nullptr, 1.0);  // the energies and residual of the restored state
+      throw;
+    }
+  }
+
   void advance(double h, int depth) {
     // The predictor that converged last is tried first, the other one next.
     const Predictor other = (predictor == Predictor::extrapolated) ? Predictor::velocity_only
@@ -402,18 +442,40 @@ struct GeneralizedAlpha::Implementation {
 
   // Structure changes ----------------------------------------------------------------------------
 
+  /// Blocks or elements the user changed since the last step (Model::replace_element,
+  /// add_element, replace_state with the same dofs) are taken in before the next step: an element
+  /// evaluated through a stale pattern would add its rows to another element's dofs. A new number
+  /// of dofs needs remap(P) first, which carries the state across.
+  void take_structure_changes() {
+    if (model.structure_version() == structure_version) return;
+    if (model.dof_count() != assembly.dof_count())
+      throw Error("the model now has " + std::to_string(model.dof_count()) + " dofs, the integrator's state " +
+                      std::to_string(assembly.dof_count()),
+                  "solvers::GeneralizedAlpha::step",
+                  "after Model::replace_state, call remap(P) with P of (new dofs) x (old dofs)");
+    rebuild(nullptr);
+  }
+
   /// After a converged step: let the constraints switch at their events, and rebuild when they or
-  /// the model changed the structure.
+  /// the model changed the structure. After an event the method restarts from accelerations
+  /// consistent with the new equations: the algorithmic acceleration a is an O(h)-shifted mean of
+  /// v̇ under the old equations (a released mass would keep its pendulum's), and carrying it
+  /// across makes every later step first-order accurate.
   void handle_events() {
-    bool changed = model.structure_version() != structure_version;
+    bool changed = model.structure_version() != structure_version, event = false;
     for (auto& constraint : constraints) {
       std::string description;
       if (constraint->update_structure(model.state(), velocity, t, description)) {
-        changed = true;
+        changed = event = true;
         events.emplace_back(t, description);
       }
     }
-    if (changed) rebuild(nullptr);
+    if (!changed) return;
+    rebuild(nullptr);
+    if (!event) return;
+    consistent_accelerations();
+    evaluate(t, nullptr, 1.0);
+    last_work_force = work_force();
   }
 
   /// Rebuilds the pattern and the symbolic factorization; carries v, v̇, a through P (if the dof
@@ -501,21 +563,30 @@ void GeneralizedAlpha::initialize() {
 }
 
 void GeneralizedAlpha::step() {
+  impl_->take_structure_changes();
   if (!impl_->initialized) initialize();
   const auto start = std::chrono::steady_clock::now();
-  impl_->advance(impl_->options.time_step, 0);
+  impl_->whole_step();
   impl_->handle_events();
   impl_->counters.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void GeneralizedAlpha::remap(const Eigen::MatrixXd& P) {
+void GeneralizedAlpha::remap(const Eigen::MatrixXd& P, const Eigen::VectorXd& increment_units) {
   const int new_dofs = impl_->model.dof_count();
+  const char* where = "solvers::GeneralizedAlpha::remap";
   if (P.rows() != new_dofs || P.cols() != impl_->assembly.dof_count() || !P.allFinite())
     throw Error("the map is " + std::to_string(P.rows()) + "x" + std::to_string(P.cols()) +
                     ", expected " + std::to_string(new_dofs) + "x" +
                     std::to_string(impl_->assembly.dof_count()) + " with finite entries",
-                "solvers::GeneralizedAlpha::remap",
-                "give P as (new dofs) x (old dofs), after Model::replace_state");
+                where, "give P as (new dofs) x (old dofs), after Model::replace_state");
+  // The old units belong to the old layout: a run with units needs the new layout's.
+  if (impl_->options.increment_units.size() != 0 || increment_units.size() != 0) {
+    if (increment_units.size() != new_dofs || !(increment_units.array() > 0.0).all() || !increment_units.allFinite())
+      throw Error("increment_units for the new layout has " + std::to_string(increment_units.size()) + " entries for " +
+                      std::to_string(new_dofs) + " dofs, or an entry that is not positive and finite",
+                  where, "give one positive unit per dof of the new layout (the run uses increment_units)");
+    impl_->options.increment_units = increment_units;
+  }
   impl_->rebuild(&P);
 }
 

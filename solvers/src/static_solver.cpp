@@ -39,8 +39,8 @@ public:
   void set_multipliers(const Eigen::VectorXd& lambda) { lambda_ = lambda; }
 
   /// Iterates from the converged state to equilibrium at `load_factor`; false if it does not
-  /// converge in max_iterations or an element cannot be evaluated (the state is then whatever
-  /// the last iterate was).
+  /// converge in max_iterations, an element cannot be evaluated or the tangent is singular at an
+  /// iterate (the state is then whatever the last iterate was).
   bool solve(double load_factor, StaticStep& step, StaticReport& report) {
     const core::Configuration converged = model_.state();
     const int n = assembly_.dof_count();
@@ -72,7 +72,11 @@ public:
       if (iteration == options_.max_iterations) break;
       delta = -residual;
       assembly_.pattern().apply_dirichlet(model_.fixed_dofs(), delta);
-      solver_->factorize(assembly_.pattern().matrix());
+      try {
+        solver_->factorize(assembly_.pattern().matrix());
+      } catch (const Error&) {
+        return false;  // a singular tangent at this iterate: cut the load step back
+      }
       ++report.factorizations;
       solver_->solve(delta);
       ++report.newton_iterations;
@@ -113,7 +117,11 @@ StaticReport solve_static(core::Model& model, const StaticOptions& options,
   NewtonStep newton(model, constraints, options);
   double converged_factor = 0.0;
   double increment = 1.0 / options.load_steps;
-  int cutbacks_in_step = 0;
+  // Halvings of the load increment so far. The increment never grows back, so this counts every
+  // halving, not only those since the last converged step: near a limit load the steps would
+  // otherwise alternate "converged, halved" for ever, the increment shrinking below the load
+  // factor's ulp and the loop never ending.
+  int halvings = 0;
   while (converged_factor < 1.0) {
     const double target = std::min(1.0, converged_factor + increment);
     const core::Configuration converged = model.state();
@@ -122,16 +130,15 @@ StaticReport solve_static(core::Model& model, const StaticOptions& options,
     if (newton.solve(target, step, report)) {
       report.steps.push_back(step);
       converged_factor = target;
-      cutbacks_in_step = 0;
       continue;
     }
     model.state() = converged;
     newton.set_multipliers(converged_lambda);
     ++report.cutbacks;
-    if (++cutbacks_in_step > options.max_cutbacks) {
+    if (++halvings > options.max_cutbacks) {
       std::ostringstream what;
       what << "Newton did not converge from load factor " << converged_factor << " to " << target
-           << " after " << options.max_cutbacks << " cut-backs; the model keeps the state at the "
+           << " with the load increment halved " << options.max_cutbacks << " times; the model keeps the state at the "
            << "last converged load factor " << converged_factor;
       throw ConvergenceError(what.str(), "solvers::solve_static",
                              "use more load steps, check supports (an unsupported rigid-body mode "

@@ -112,7 +112,8 @@ public:
   void initialize();
   /// Advances by one time step (in halves, recursively, if Newton fails). Throws spar::Error
   /// naming the step, the time and the likely cause when even max_cutbacks halvings fail; the
-  /// state is then the last converged one.
+  /// state, velocities, accelerations, multipliers and time are then those before the call (no
+  /// converged half-step of the failed step is kept).
   void step();
 
   double time() const;
@@ -132,12 +133,18 @@ public:
 
   /// Structure changes (docs/model.md, "Structure changes"). The integrator rebuilds its sparse
   /// pattern and symbolic factorization by itself after a step in which a constraint's
-  /// update_structure() reported a change or the model's structure_version() moved. When blocks
+  /// update_structure() reported a change or the model's structure_version() moved; after a
+  /// constraint's event it also restarts the method from v̇ and λ consistent with the new
+  /// equations (a = v̇, as at t = 0), which keeps it second order across the event. When blocks
   /// were split or merged (Model::replace_state), call remap with the linear map P (new dofs ×
   /// old dofs) that carries velocities, accelerations and the algorithmic acceleration across:
   /// v ← P v, v̇ ← P v̇, a ← P a. Multipliers of constraints whose equation count is unchanged are
-  /// kept; the others start from zero (an index-3 multiplier has no history in the method).
-  void remap(const Eigen::MatrixXd& P);
+  /// kept; the others start from zero (an index-3 multiplier has no history in the method). A run
+  /// with DynamicOptions::increment_units needs the new layout's units, one per new dof (they
+  /// replace the old ones; refused when missing or misfitting). An element or block changed
+  /// without a new dof count is taken in by the next step() itself; a new dof count without
+  /// remap is refused there.
+  void remap(const Eigen::MatrixXd& P, const Eigen::VectorXd& increment_units = {});
   /// The events of the run so far (time and what the constraint said), in order.
   const std::vector<std::pair<double, std::string>>& events() const;
 

@@ -21,7 +21,7 @@ struct StaticOptions {
   double residual_tolerance = 1e-9;   ///< ‖r‖∞ ≤ tol · max(‖f_int‖∞, ‖λ f_ext‖∞) on free dofs
   double increment_tolerance = 1e-10; ///< ‖Δ‖∞ of the last Newton increment (m and rad)
   double constraint_tolerance = 1e-10; ///< ‖Φ‖∞ at convergence (constraints only)
-  int max_cutbacks = 10;              ///< halvings of a load increment before giving up
+  int max_cutbacks = 10;              ///< halvings of the load increment (which never grows back) before giving up
   LinearSolverKind linear_solver = LinearSolverKind::klu;
   core::AssemblyExecution assembly = core::AssemblyExecution::serial;
 };
