@@ -48,12 +48,14 @@ int main(int argc, char** argv) try {
                                                "Newton: relative dynamic residual (off: 003's test)");
   const int max_iterations = cli.integer("--max-iterations", 25, "Newton iterations before a step is cut back");
   const std::string solver = cli.text("--solver", "klu", "sparse LU: klu | umfpack | eigen-lu");
+  const double drive_rise_time = cli.number("--drive-rise-time", 0.0,
+                                            "ramp the drive from 0 to M over this time [s] (0: the paper's step)");
   const std::string out = cli.text("--out", "results/slider_crank", "output folder");
   if (!cli.finish()) return 0;
 
   // 2. Build the mechanism of 003 Table 1 (examples/slider_crank/slider_crank_model.hpp): the
   //    rods, the slider, the joints, the driving moment and gravity.
-  examples::SliderCrank mechanism = examples::build_slider_crank(elements);
+  examples::SliderCrank mechanism = examples::build_slider_crank(elements, drive_rise_time);
   core::Model& model = mechanism.model;
   const core::GeometricallyExactBeam& crank = model.beam(mechanism.crank);
   const core::GeometricallyExactBeam& coupler = model.beam(mechanism.coupler);
