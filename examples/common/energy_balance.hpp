@@ -4,6 +4,7 @@
 // and what the integrator dissipated. tests/examples/check_results reads these names.
 #include <spar/spar.hpp>
 
+#include <ostream>
 #include <vector>
 
 namespace spar::examples {
@@ -23,6 +24,14 @@ inline std::vector<core::ResultsQuantity> energy_balance_layout() {
 
 inline std::vector<double> energy_balance_values(const solvers::Energies& e) {
   return {e.kinetic, e.strain, e.gravity, e.external_work, e.numerical_dissipation};
+}
+
+/// The CSV columns of the work and the dissipation (appended after an example's own columns).
+inline constexpr const char* energy_balance_csv_columns = "external_work,numerical_dissipation";
+
+/// Writes ",W,D" for energy_balance_csv_columns.
+inline void write_energy_balance_csv(std::ostream& csv, const solvers::Energies& e) {
+  csv << ',' << e.external_work << ',' << e.numerical_dissipation;
 }
 
 /// `own` followed by `balance` (a layout or a row of values).

@@ -138,7 +138,8 @@ int main(int argc, char** argv) try {
   std::ofstream csv(out + "/flexible_pendulum.csv");
   csv.precision(15);
   csv << "t,tip_x,tip_y,tip_z,chord_deflection,kinetic_energy,strain_energy,gravity_potential,"
-         "total_energy,energy_drift,constraint_residual,newton_iterations\n";
+         "total_energy,energy_drift,constraint_residual,newton_iterations,"
+      << examples::energy_balance_csv_columns << '\n';
   double max_drift = 0.0, max_deflection = 0.0, max_residual = 0.0, drift = 0.0;
   auto record = [&]() {
     const core::Configuration& q = model.state();
@@ -152,7 +153,9 @@ int main(int argc, char** argv) try {
     max_residual = std::max(max_residual, residual);
     csv << integrator.time() << ',' << tip.x() << ',' << tip.y() << ',' << tip.z() << ',' << deflection << ','
         << energy.kinetic << ',' << energy.strain << ',' << energy.gravity << ',' << energy.total() << ','
-        << drift << ',' << residual << ',' << integrator.last_step_iterations() << '\n';
+        << drift << ',' << residual << ',' << integrator.last_step_iterations();
+    examples::write_energy_balance_csv(csv, energy);
+    csv << '\n';
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
                     .scalars = examples::followed_by<double>(

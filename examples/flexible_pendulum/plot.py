@@ -13,6 +13,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from energy_plot import plot_energy_balance  # noqa: E402
+
 folder = sys.argv[1] if len(sys.argv) > 1 else "results/flexible_pendulum"
 with open(os.path.join(folder, "flexible_pendulum.csv")) as f:
     rows = list(csv.DictReader(f))
@@ -50,11 +53,7 @@ ax.set_ylabel("energy [J]")
 ax.set_title("energies")
 ax.legend(fontsize=8)
 
-ax = axes[1][1]
-ax.plot(t, column("energy_drift"), color="C3")
-ax.set_xlabel("t [s]")
-ax.set_ylabel("(E - E0) / (m g L / 2)")
-ax.set_title("energy drift")
+plot_energy_balance(axes[1][1], rows)
 
 for a in axes.flat:
     a.grid(True, alpha=0.3)

@@ -105,7 +105,8 @@ int main(int argc, char** argv) try {
   std::ofstream csv(out + "/heavy_top.csv");
   csv.precision(15);
   csv << "t,x,y,z,x_ref,y_ref,z_ref,omega_1,omega_2,omega_3,rotation_error,position_error,omega_error,"
-         "kinetic_energy,gravity_potential,total_energy,energy_drift,constraint_residual,newton_iterations\n";
+         "kinetic_energy,gravity_potential,total_energy,energy_drift,constraint_residual,newton_iterations,"
+      << examples::energy_balance_csv_columns << '\n';
   double max_rotation_error = 0.0, max_position_error = 0.0, max_drift = 0.0, max_residual = 0.0;
   double rotation_error = 0.0, position_error = 0.0, omega_error = 0.0, drift = 0.0;
   auto record = [&]() {
@@ -126,7 +127,9 @@ int main(int argc, char** argv) try {
     csv << integrator.time() << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << x_ref.x() << ','
         << x_ref.y() << ',' << x_ref.z() << ',' << omega.x() << ',' << omega.y() << ',' << omega.z() << ','
         << rotation_error << ',' << position_error << ',' << omega_error << ',' << energy.kinetic << ',' << energy.gravity << ','
-        << energy.total() << ',' << drift << ',' << residual << ',' << integrator.last_step_iterations() << '\n';
+        << energy.total() << ',' << drift << ',' << residual << ',' << integrator.last_step_iterations();
+    examples::write_energy_balance_csv(csv, energy);
+    csv << '\n';
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
                     .scalars = examples::followed_by<double>(

@@ -13,6 +13,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from energy_plot import plot_energy_balance  # noqa: E402
+
 folder = sys.argv[1] if len(sys.argv) > 1 else "results/heavy_top"
 with open(os.path.join(folder, "heavy_top.csv")) as f:
     rows = list(csv.DictReader(f))
@@ -51,11 +54,7 @@ ax.set_xlabel("t [s]")
 ax.set_title("error against the reference")
 ax.legend(fontsize=8)
 
-ax = axes[1][1]
-ax.plot(t, column("energy_drift"), color="C3")
-ax.set_xlabel("t [s]")
-ax.set_ylabel("(E - E0) / E0")
-ax.set_title("relative energy drift")
+plot_energy_balance(axes[1][1], rows)
 
 for a in axes.flat:
     a.grid(True, alpha=0.3)

@@ -110,7 +110,8 @@ int main(int argc, char** argv) try {
   std::ofstream csv(out + "/slider_crank.csv");
   csv.precision(15);
   csv << "t,rod2_deformation_rate,rod1_angular_speed,slider_x,rod2_mid_x,rod2_mid_y,rod2_mid_z,"
-         "constraint_residual,newton_iterations\n";
+         "constraint_residual,newton_iterations,kinetic_energy,strain_energy,gravity_potential,"
+      << examples::energy_balance_csv_columns << '\n';
   double max_speed = 0.0, max_rate = 0.0, max_residual = 0.0;
   std::optional<double> slider_x_at_0_1;  // the slider at t = 0.1 s, to compare runs and engines
   auto record = [&]() {
@@ -132,7 +133,10 @@ int main(int argc, char** argv) try {
     max_residual = std::max(max_residual, residual);
     csv << integrator.time() << ',' << rate << ',' << speed << ',' << q.position[slider].x() << ','
         << midpoint.x() << ',' << midpoint.y() << ',' << midpoint.z() << ',' << residual << ','
-        << integrator.last_step_iterations() << '\n';
+        << integrator.last_step_iterations() << ',' << energy.kinetic << ',' << energy.strain << ','
+        << energy.gravity;
+    examples::write_energy_balance_csv(csv, energy);
+    csv << '\n';
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
                     .scalars = examples::followed_by<double>(
