@@ -7,43 +7,63 @@ namespace spar::core {
 
 namespace {
 
-/// The gyroscopic force and its velocity tangent for frames with angular momenta Π_I:
-/// f_I = Ω_I × Π_I, ∂f_I/∂Ω_K = −hat(Π_I) δ_IK + hat(Ω_I) ∂Π_I/∂Ω_K (docs/dynamics.md eq. D2).
+/// Both parts of InertiaContribution from its mass matrix.
 void add_gyroscopic(const Eigen::Ref<const Eigen::VectorXd>& velocity, InertiaContribution& c) {
-  const Eigen::Index n = c.mass.rows();
-  const int k = static_cast<int>(n / frame_dofs);
-  c.gyroscopic.setZero(n);
-  c.gyroscopic_tangent.setZero(n, n);
-  for (int I = 0; I < k; ++I) {
-    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
-    for (int J = 0; J < k; ++J)
-      momentum += c.mass.block<3, 3>(6 * I + 3, 6 * J + 3) * velocity.segment<3>(6 * J + 3);
-    const Eigen::Vector3d omega_I = velocity.segment<3>(6 * I + 3);
-    c.gyroscopic.segment<3>(6 * I + 3) = omega_I.cross(momentum);
-    const Eigen::Matrix3d hat_omega = lie::hat(omega_I);
-    for (int K = 0; K < k; ++K)
-      c.gyroscopic_tangent.block<3, 3>(6 * I + 3, 6 * K + 3) =
-          hat_omega * c.mass.block<3, 3>(6 * I + 3, 6 * K + 3);
-    c.gyroscopic_tangent.block<3, 3>(6 * I + 3, 6 * I + 3) -= lie::hat(momentum);
-  }
+  c.gyroscopic.setZero(c.mass.rows());
+  c.gyroscopic_tangent.setZero(c.mass.rows(), c.mass.cols());
+  add_gyroscopic_force(c.mass, velocity, c.gyroscopic);
+  add_gyroscopic_tangent(c.mass, velocity, c.gyroscopic_tangent);
+}
+
+/// Π_I = Σ_J M_IJ^ΩΩ Ω_J, the angular momentum carried by frame I.
+Eigen::Vector3d angular_momentum(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                                 int I) {
+  Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+  for (int J = 0; J < mass.rows() / frame_dofs; ++J)
+    momentum += mass.block<3, 3>(6 * I + 3, 6 * J + 3) * velocity.segment<3>(6 * J + 3);
+  return momentum;
 }
 
 }  // namespace
 
-void beam_element_inertia(const GeometricallyExactBeam& beam, int e,
-                          const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                          InertiaContribution& out) {
+// docs/dynamics.md eq. D2.
+void add_gyroscopic_force(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                          Eigen::Ref<Eigen::VectorXd> force) {
+  for (int I = 0; I < mass.rows() / frame_dofs; ++I)
+    force.segment<3>(6 * I + 3) +=
+        Eigen::Vector3d(velocity.segment<3>(6 * I + 3)).cross(angular_momentum(mass, velocity, I));
+}
+
+// docs/dynamics.md eq. D2.
+void add_gyroscopic_tangent(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                            Eigen::Ref<Eigen::MatrixXd> tangent) {
+  const int k = static_cast<int>(mass.rows() / frame_dofs);
+  for (int I = 0; I < k; ++I) {
+    const Eigen::Matrix3d hat_omega = lie::hat(Eigen::Vector3d(velocity.segment<3>(6 * I + 3)));
+    for (int K = 0; K < k; ++K)
+      tangent.block<3, 3>(6 * I + 3, 6 * K + 3) += hat_omega * mass.block<3, 3>(6 * I + 3, 6 * K + 3);
+    tangent.block<3, 3>(6 * I + 3, 6 * I + 3) -= lie::hat(angular_momentum(mass, velocity, I));
+  }
+}
+
+// M_IJ = m_IJ diag(ρA I, ρJ)  (003 eq. 32 with interpolated nodal velocities).
+void beam_element_mass(const GeometricallyExactBeam& beam, int e, ElementMatrix& mass) {
   const BeamElement& element = beam.element(e);
   const int k = beam.degree() + 1;
-  // M_IJ = m_IJ diag(ρA I, ρJ)  (003 eq. 32 with interpolated nodal velocities).
-  out.mass.setZero(frame_dofs * k, frame_dofs * k);
+  mass.setZero(frame_dofs * k, frame_dofs * k);
   const SectionInertia& inertia = beam.inertia();
   for (int I = 0; I < k; ++I)
     for (int J = 0; J < k; ++J) {
       const double m = element.mass_coefficients(I, J);
-      out.mass.block<3, 3>(6 * I, 6 * J).diagonal().setConstant(m * inertia.mass_per_length);
-      out.mass.block<3, 3>(6 * I + 3, 6 * J + 3) = m * inertia.rotary;
+      mass.block<3, 3>(6 * I, 6 * J).diagonal().setConstant(m * inertia.mass_per_length);
+      mass.block<3, 3>(6 * I + 3, 6 * J + 3) = m * inertia.rotary;
     }
+}
+
+void beam_element_inertia(const GeometricallyExactBeam& beam, int e,
+                          const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                          InertiaContribution& out) {
+  beam_element_mass(beam, e, out.mass);
   add_gyroscopic(velocity, out);
 }
 

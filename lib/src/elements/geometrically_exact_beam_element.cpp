@@ -19,6 +19,7 @@ GeometricallyExactBeamElement::GeometricallyExactBeamElement(const Geometrically
     : beam_(&beam), beam_index_(beam_index), element_(e), shape_integrals_(beam_shape_integrals(beam, e)) {
   const int first = beam.node(beam.element(e).first_control_point);
   for (int I = 0; I <= beam.degree(); ++I) blocks_.push_back(first + I);
+  beam_element_mass(beam, e, mass_);
 }
 
 std::string GeometricallyExactBeamElement::name() const {
@@ -58,12 +59,13 @@ void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const Eleme
   ElementVector v(n), a(n);
   gather(q, blocks_, *in.velocity, v);
   gather(q, blocks_, *in.acceleration, a);
-  InertiaContribution inertia;
-  beam_element_inertia(*beam_, element_, v, inertia);
-  if (request.residual) out.residual += inertia.mass * a + inertia.gyroscopic;
-  if (request.mass) out.mass += inertia.mass;
-  if (request.damping) out.damping += inertia.gyroscopic_tangent;
-  if (request.energy) out.energy.kinetic = kinetic_energy(inertia, v);
+  if (request.residual) {
+    out.residual.noalias() += mass_ * a;
+    add_gyroscopic_force(mass_, v, out.residual);
+  }
+  if (request.mass) out.mass += mass_;
+  if (request.damping) add_gyroscopic_tangent(mass_, v, out.damping);
+  if (request.energy) out.energy.kinetic = 0.5 * v.dot(mass_ * v);
 }
 
 }  // namespace spar::core

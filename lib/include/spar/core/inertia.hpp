@@ -34,6 +34,17 @@ struct InertiaContribution {
   ElementMatrix gyroscopic_tangent;  ///< ∂f_gyr/∂v (6k × 6k)
 };
 
+/// The constant mass matrix of element e of a beam, M_IJ = m_IJ diag(ρA I, ρJ) (6(p + 1) square).
+void beam_element_mass(const GeometricallyExactBeam& beam, int e, ElementMatrix& mass);
+
+/// Adds the gyroscopic force f_I = Ω_I × Π_I, Π_I = Σ_J M_IJ^ΩΩ Ω_J, of frames with mass matrix
+/// `mass` at local velocity v to `force` (docs/dynamics.md eq. D2).
+void add_gyroscopic_force(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                          Eigen::Ref<Eigen::VectorXd> force);
+/// Adds its velocity tangent ∂f_I/∂Ω_K = −hat(Π_I) δ_IK + hat(Ω_I) M_IK^ΩΩ to `tangent`.
+void add_gyroscopic_tangent(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                            Eigen::Ref<Eigen::MatrixXd> tangent);
+
 /// Inertia of element e of a beam at the element's local velocity v (6(p + 1) entries).
 void beam_element_inertia(const GeometricallyExactBeam& beam, int e,
                           const Eigen::Ref<const Eigen::VectorXd>& velocity,

@@ -6,6 +6,7 @@
 /// f_I = ∫ N_I ρA g dS.
 
 #include <spar/core/beam.hpp>
+#include <spar/core/beam_element.hpp>
 #include <spar/core/element.hpp>
 
 #include <string>
@@ -30,6 +31,8 @@ private:
   std::vector<int> blocks_;
   /// ∫ N_I dS over the element (part-0 Gauss points): consistent nodal weights of a uniform load.
   std::vector<double> shape_integrals_;
+  /// The constant consistent mass matrix (core/inertia.hpp), computed once.
+  ElementMatrix mass_;
 };
 
 /// ∫ N_I dS over element e of a beam, one entry per control point of the element: the consistent
