@@ -44,22 +44,24 @@ SlidingJoint::SlidingJoint(const SlidingJointParameters& parameters, core::Model
   const iga::KnotVector& U = carrier_->reference_centerline().knots();
   length_ = carrier_->reference_centerline().arc_length(U.first(), U.last());
   parameter_per_zeta_ = (U.last() - U.first()) / length_;
-  const auto check_inside = [&](double zeta, const std::string& what) {
-    if (!(zeta >= 0.0 && zeta <= length_))
+  // Coordinates within 1e-9 L₀ of an end (a stop at the carrier's end given as the distance
+  // between its end points, say) are snapped to it: L₀ is a computed arc length.
+  const auto inside = [&](double zeta, const std::string& what) {
+    if (!(zeta >= -1e-9 * length_ && zeta <= (1 + 1e-9) * length_))
       throw Error(what + " = " + number(zeta) + " is outside the carrier's [0, L0 = " +
                       number(length_) + "]",
                   where(), "give carrier coordinates between 0 and the carrier's reference length");
+    return std::clamp(zeta, 0.0, length_);
   };
-  check_inside(parameters.zeta, "the initial zeta");
-  if (lower_stop_) check_inside(*lower_stop_, "the lower stop");
-  if (upper_stop_) check_inside(*upper_stop_, "the upper stop");
-  if ((lower_stop_ && !(parameters.zeta > *lower_stop_)) ||
-      (upper_stop_ && !(parameters.zeta < *upper_stop_)))
+  const double zeta0 = inside(parameters.zeta, "the initial zeta");
+  if (lower_stop_) lower_stop_ = inside(*lower_stop_, "the lower stop");
+  if (upper_stop_) upper_stop_ = inside(*upper_stop_, "the upper stop");
+  if ((lower_stop_ && !(zeta0 > *lower_stop_)) || (upper_stop_ && !(zeta0 < *upper_stop_)))
     throw Error("the initial zeta = " + number(parameters.zeta) +
                     " is not strictly between the stops",
                 where(), "start the slider between its end stops");
-  zeta_block_ = model.add_vector(Eigen::VectorXd::Constant(1, parameters.zeta));
-  set_window(element_at(parameters.zeta));
+  zeta_block_ = model.add_vector(Eigen::VectorXd::Constant(1, zeta0));
+  set_window(element_at(zeta0));
 }
 
 int SlidingJoint::element_at(double zeta) const {

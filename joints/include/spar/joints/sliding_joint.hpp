@@ -59,7 +59,8 @@ class SlidingJoint final : public Constraint {
  public:
   /// Adds the ζ block to `model`. Raises spar::Error when the carrier or the slider's node does
   /// not exist, the slider is on the ground or on the carrier itself, or ζ₀ or a stop is outside
-  /// [0, L₀] or ζ₀ is not strictly between the stops.
+  /// [0, L₀] (within 1e-9 L₀ of an end counts as the end) or ζ₀ is not strictly between the
+  /// stops.
   SlidingJoint(const SlidingJointParameters& parameters, core::Model& model);
 
   int equation_count() const override { return locked_ ? 4 : 3; }
