@@ -24,6 +24,8 @@
 
 #include <cli.hpp>
 
+#include "sliding_beam_model.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -45,50 +47,20 @@ int main(int argc, char** argv) try {
   const std::string out = cli.text("--out", "results/sliding_beam", "output folder");
   if (!cli.finish()) return 0;
 
-  // 2. The two beams of 003 Table 3.
-  const Eigen::Vector3d A(0, 3, 1), B(0, 0, 0), M(1, 3, 1);
-  const core::Material material{.young_modulus = 2e8, .poisson_ratio = 0.3, .density = 800};
-  const core::CrossSection section = core::CrossSection::rectangle(0.01, 0.01, material.poisson_ratio);
-  const core::SectionStiffness stiffness = core::SectionStiffness::from(material, section);
-  const core::SectionInertia inertia = core::SectionInertia::from(material, section);
-  core::Model model;
-  const int carrier_index = model.add_beam({.centerline = iga::straight_line<3>(A, B, elements, 2),
-                                            .stiffness = stiffness, .inertia = inertia,
-                                            .section_axis_hint = Eigen::Vector3d::UnitX()});
-  const int slider_index = model.add_beam({.centerline = iga::straight_line<3>(A, M, sliding_elements, 2),
-                                           .stiffness = stiffness, .inertia = inertia});
-  const core::GeometricallyExactBeam& carrier = model.beam(carrier_index);
-  const core::GeometricallyExactBeam& sliding = model.beam(slider_index);
-  //    The 1 kg point mass at M: a rigid body whose rotational inertia (a 1 kg sphere of 1 cm
-  //    radius) never matters, since the spherical joint below passes it no moment.
-  const int mass = model.rigid_body(model.add_rigid_body(
-      {.center_of_mass = M, .mass = 1.0, .inertia = 4e-5 * Eigen::Matrix3d::Identity()})).node;
-  model.set_gravity(Eigen::Vector3d(0, 0, -9.81));
-
-  // 3. The joints: the carrier's ends pinned at A and B, the mass pinned to the sliding beam's
-  //    tip, and the sliding joint of the sliding beam's end at A along the carrier, locking at B.
-  const core::Configuration& q0 = model.state();
-  const int carrier_end = carrier.node(carrier.control_point_count() - 1);
-  solvers::ConstraintList constraints;
-  constraints.push_back(std::make_unique<joints::SphericalJoint>(
-      joints::attach_at(carrier.node(0), A, q0), joints::attach_at(-1, A, q0), q0));
-  constraints.push_back(std::make_unique<joints::SphericalJoint>(
-      joints::attach_at(carrier_end, B, q0), joints::attach_at(-1, B, q0), q0));
-  constraints.push_back(std::make_unique<joints::SphericalJoint>(
-      joints::attach_at(sliding.node(sliding.control_point_count() - 1), M, q0),
-      joints::attach_at(mass, M, q0), q0));
-  auto sliding_joint = std::make_unique<joints::SlidingJoint>(
-      joints::SlidingJointParameters{.slider = joints::attach_at(sliding.node(0), A, model.state()),
-                                     .carrier = carrier_index, .zeta = 0.0,
-                                     .upper_stop = (B - A).norm(), .name = "slider at A"},
-      model);
-  const joints::SlidingJoint& slide = *sliding_joint;
+  // 2. Build the model of 003 Table 3 (examples/sliding_beam/sliding_beam_model.hpp): the two
+  //    beams, the tip mass, gravity, the carrier's pins at A and B, the mass's pin at M and the
+  //    sliding joint of the sliding beam's end along the carrier, locking at B.
+  examples::SlidingBeam setup = examples::build_sliding_beam(elements, sliding_elements);
+  core::Model& model = setup.model;
+  const core::GeometricallyExactBeam& carrier = model.beam(setup.carrier);
+  const core::GeometricallyExactBeam& sliding = model.beam(setup.sliding);
+  const int mass = setup.mass_node;
+  const joints::SlidingJoint& slide = *setup.slide;
   const int zeta_block = slide.zeta_block();
-  constraints.push_back(std::move(sliding_joint));
 
-  // 4. The integrator, from rest.
+  // 3. The integrator, from rest.
   solvers::GeneralizedAlpha integrator(
-      model, std::move(constraints),
+      model, std::move(setup.joints),
       {.time_step = h, .spectral_radius = rho_infinity,
        .iteration_matrix = solvers::iteration_matrix_from_string(strategy), .tolerance = tolerance,
        .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8});
@@ -96,7 +68,7 @@ int main(int argc, char** argv) try {
   const auto zeta = [&] { return model.state().vector(zeta_block)(0); };
   const auto zeta_rate = [&] { return integrator.velocity()(model.state().blocks[zeta_block].offset); };
 
-  // 5. Integrate until the slider locks at B, recording every step.
+  // 4. Integrate until the slider locks at B, recording every step.
   std::filesystem::create_directories(out);
   const int carrier_samples = 8 * elements + 1, sliding_samples = 16 * sliding_elements + 1;
   core::ResultsWriter results(out + "/sliding_beam.h5",
@@ -186,7 +158,7 @@ int main(int argc, char** argv) try {
   if (!events.empty()) results.write_constant("events/time", event_times);
   results.close();
 
-  // 6. Report.
+  // 5. Report.
   const Eigen::Vector3d mass_final = model.state().position[mass];
   std::printf("sliding_beam, %d + %d quadratic elements, h = %g s, %s: the slider reached B at t = %.4f s "
               "(003: 1.306 s); %ld steps, %ld Newton iterations, %ld factorizations, %ld pattern builds, "
