@@ -25,22 +25,21 @@ std::string number(double value) {
 
 }  // namespace
 
-std::string SlidingJoint::where() const { return "joints::SlidingJoint '" + name_ + "'"; }
-
 SlidingJoint::SlidingJoint(const SlidingJointParameters& parameters, core::Model& model)
     : carrier_(&model.beam(parameters.carrier)),
       name_(parameters.name),
+      where_("joints::SlidingJoint '" + parameters.name + "'"),
       lower_stop_(parameters.lower_stop),
       upper_stop_(parameters.upper_stop) {
   const core::Configuration& q0 = model.state();
-  slider_ = AttachedPoint(single_node_frame(parameters.slider.node, q0, where()),
+  slider_ = AttachedPoint(single_node_frame(parameters.slider.node, q0, where_),
                           parameters.slider.offset);
   const int node = parameters.slider.node;
   if (node >= carrier_->first_node() &&
       node < carrier_->first_node() + carrier_->control_point_count())
     throw Error("the slider is attached to control point " +
                     std::to_string(node - carrier_->first_node()) + " of its own carrier",
-                where(), "attach the slider to another body or beam than the carrier");
+                where_, "attach the slider to another body or beam than the carrier");
   const iga::KnotVector& U = carrier_->reference_centerline().knots();
   length_ = carrier_->reference_centerline().arc_length(U.first(), U.last());
   parameter_per_zeta_ = (U.last() - U.first()) / length_;
@@ -50,7 +49,7 @@ SlidingJoint::SlidingJoint(const SlidingJointParameters& parameters, core::Model
     if (!(zeta >= -1e-9 * length_ && zeta <= (1 + 1e-9) * length_))
       throw Error(what + " = " + number(zeta) + " is outside the carrier's [0, L0 = " +
                       number(length_) + "]",
-                  where(), "give carrier coordinates between 0 and the carrier's reference length");
+                  where_, "give carrier coordinates between 0 and the carrier's reference length");
     return std::clamp(zeta, 0.0, length_);
   };
   const double zeta0 = inside(parameters.zeta, "the initial zeta");
@@ -59,7 +58,7 @@ SlidingJoint::SlidingJoint(const SlidingJointParameters& parameters, core::Model
   if ((lower_stop_ && !(zeta0 > *lower_stop_)) || (upper_stop_ && !(zeta0 < *upper_stop_)))
     throw Error("the initial zeta = " + number(parameters.zeta) +
                     " is not strictly between the stops",
-                where(), "start the slider between its end stops");
+                where_, "start the slider between its end stops");
   zeta_block_ = model.add_vector(Eigen::VectorXd::Constant(1, zeta0));
   set_window(element_at(zeta0));
 }
@@ -87,7 +86,7 @@ double SlidingJoint::zeta(const core::Configuration& q) const { return q.vector(
 SlidingJoint::Evaluation SlidingJoint::evaluate(const core::Configuration& q, int order) const {
   const double z = zeta(q);
   if (!std::isfinite(z))
-    throw Error("zeta is not finite", where(), "check the model for NaN velocities or loads");
+    throw Error("zeta is not finite", where_, "check the model for NaN velocities or loads");
   const iga::KnotVector& U = carrier_->reference_centerline().knots();
   const double end = z <= 0.0 ? 0.0 : (z >= length_ ? length_ : z);
   const double u = std::clamp(U.first() + parameter_per_zeta_ * end, U.first(), U.last());
@@ -107,7 +106,7 @@ SlidingJoint::Evaluation SlidingJoint::evaluate(const core::Configuration& q, in
     throw Error("zeta = " + number(z) + " lies in carrier element " +
                     std::to_string(e.point.element) + ", beyond the neighbours of element " +
                     std::to_string(window_element_) + " that the joint covers in this step",
-                where(), "reduce the time step: the slider crossed more than one element in a step");
+                where_, "reduce the time step: the slider crossed more than one element in a step");
   e.column = first_carrier_column + core::frame_dofs * (first - window_first_);
   return e;
 }
@@ -118,14 +117,14 @@ Eigen::Vector3d SlidingJoint::carrier_point(const core::Configuration& q) const 
 
 void SlidingJoint::value(const core::Configuration& q, double /*t*/,
                          Eigen::Ref<Eigen::VectorXd> phi) const {
-  detail::begin_vector_output(*this, q, phi, where());
+  detail::begin_vector_output(*this, q, phi, where_);
   phi.head<3>() = slider_.position(q) - carrier_point(q);  // 003 eq. 50
   if (locked_) phi(3) = zeta(q) - lock_position_;
 }
 
 void SlidingJoint::jacobian(const core::Configuration& q, double /*t*/,
                             Eigen::Ref<Eigen::MatrixXd> B) const {
-  detail::begin_jacobian(*this, q, B, where());
+  detail::begin_jacobian(*this, q, B, where_);
   const Evaluation e = evaluate(q, 1);
   slider_.add_jacobian<3>(q, Eigen::Matrix3d::Identity(), B, 0);
   B.block<3, 1>(0, zeta_column) = -carrier_->centerline_derivative(q, e.point, 1);
@@ -137,7 +136,7 @@ void SlidingJoint::jacobian(const core::Configuration& q, double /*t*/,
 void SlidingJoint::multiplier_tangent(const core::Configuration& q, double /*t*/,
                                       const Eigen::Ref<const Eigen::VectorXd>& lambda,
                                       Eigen::Ref<Eigen::MatrixXd> K) const {
-  detail::begin_multiplier_tangent(*this, q, lambda, K, where());
+  detail::begin_multiplier_tangent(*this, q, lambda, K, where_);
   const Evaluation e = evaluate(q, 2);
   const Eigen::Vector3d force = lambda.head<3>();
   slider_.add_multiplier_tangent(q, force, K);
@@ -154,7 +153,7 @@ void SlidingJoint::multiplier_tangent(const core::Configuration& q, double /*t*/
 void SlidingJoint::acceleration_terms(const core::Configuration& q,
                                       const Eigen::VectorXd& velocity, double /*t*/,
                                       Eigen::Ref<Eigen::VectorXd> c) const {
-  detail::begin_acceleration_terms(*this, q, velocity, c, where());
+  detail::begin_acceleration_terms(*this, q, velocity, c, where_);
   const Evaluation e = evaluate(q, 2);
   const double zeta_rate = velocity(q.blocks[zeta_block_].offset);
   // ẍ_B = Σ N_I ẍ_I + x_B,ζ ζ̈ + 2 ζ̇ Σ N_I,ζ ẋ_I + x_B,ζζ ζ̇².
@@ -188,7 +187,7 @@ bool SlidingJoint::update_structure(const core::Configuration& q, const Eigen::V
     throw Error("the slider ran off the " + std::string(z < 0.0 ? "start" : "end") +
                     " of its carrier at t = " + number(t) + " (zeta = " + number(z) +
                     ", carrier coordinates 0 … " + number(length_) + ")",
-                where(), "give the joint an end stop there (lower_stop / upper_stop), or end the "
+                where_, "give the joint an end stop there (lower_stop / upper_stop), or end the "
                          "run before the slider reaches the carrier's end");
   const int element = element_at(z);
   if (element == window_element_) return false;

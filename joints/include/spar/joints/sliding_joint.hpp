@@ -112,10 +112,10 @@ class SlidingJoint final : public Constraint {
   Evaluation evaluate(const core::Configuration& q, int order) const;
   void set_window(int element);
   int element_at(double zeta) const;
-  std::string where() const;
 
   const core::GeometricallyExactBeam* carrier_;
   std::string name_;
+  std::string where_;  ///< "joints::SlidingJoint '<name>'", built once: evaluations allocate nothing
   AttachedPoint slider_;
   int zeta_block_ = -1;
   double length_ = 0.0;
