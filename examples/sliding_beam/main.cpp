@@ -4,6 +4,7 @@
 // Sample runs:
 //   sliding_beam                                   (16 + 2 quadratic elements, h = 1e-3 s, update)
 //   sliding_beam --elements 32 --h 5e-4            (a convergence-study run)
+//   sliding_beam --degree 3 --elements 64 --sliding-elements 8 --h 5e-4
 //   sliding_beam --strategy frozen --out results/sliding_beam_frozen
 //
 // Description:
@@ -13,7 +14,7 @@
 //   carrier at the coordinate ζ, its rotation free), and a 1 kg point mass sits at M (a rigid
 //   body joined to the sliding beam's tip by a spherical joint, so its own rotation carries no
 //   load). Both beams: 0.01 × 0.01 m, E = 2e8 Pa, ν = 0.3, ρ = 800 kg/m³, quadratic C¹ NURBS
-//   (003: 16 and 2 elements). Everything starts straight and at rest; gravity 9.81 m/s² along −Z
+//   (003: 16 and 2 elements; `--degree 3` for cubic C² ones). Everything starts straight and at rest; gravity 9.81 m/s² along −Z
 //   pulls the mass down and the slider down the carrier. The run stops when the slider reaches B
 //   (an end stop at ζ = L locks the joint; 003: t = 1.306 s) and reports the arrival time,
 //   interpolated linearly in ζ between the two steps around it. It writes the mass's trajectory
@@ -39,8 +40,9 @@ int main(int argc, char** argv) try {
   examples::CommandLine cli(argc, argv, "sliding_beam: the eccentric sliding beam of 003 section 5.2");
   const double h = cli.number("--h", 1e-3, "time step [s]");
   const double t_end = cli.number("--t-end", 3.0, "end time if the slider has not reached B by then [s]");
-  const int elements = cli.integer("--elements", 16, "quadratic NURBS elements of the carrier beam");
-  const int sliding_elements = cli.integer("--sliding-elements", 2, "quadratic NURBS elements of the sliding beam");
+  const int elements = cli.integer("--elements", 16, "NURBS elements of the carrier beam");
+  const int sliding_elements = cli.integer("--sliding-elements", 2, "NURBS elements of the sliding beam");
+  const int degree = cli.integer("--degree", 2, "NURBS degree of both beams (003: 2)");
   const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified");
   const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity");
   const double tolerance = cli.number("--tolerance", 1e-12, "Newton: |[dq, h^2 beta dlambda]|^2");
@@ -50,7 +52,7 @@ int main(int argc, char** argv) try {
   // 2. Build the model of 003 Table 3 (examples/sliding_beam/sliding_beam_model.hpp): the two
   //    beams, the tip mass, gravity, the carrier's pins at A and B, the mass's pin at M and the
   //    sliding joint of the sliding beam's end along the carrier, locking at B.
-  examples::SlidingBeam setup = examples::build_sliding_beam(elements, sliding_elements);
+  examples::SlidingBeam setup = examples::build_sliding_beam(elements, sliding_elements, degree);
   core::Model& model = setup.model;
   const core::GeometricallyExactBeam& carrier = model.beam(setup.carrier);
   const core::GeometricallyExactBeam& sliding = model.beam(setup.sliding);
@@ -160,15 +162,15 @@ int main(int argc, char** argv) try {
 
   // 5. Report.
   const Eigen::Vector3d mass_final = model.state().position[mass];
-  std::printf("sliding_beam, %d + %d quadratic elements, h = %g s, %s: the slider reached B at t = %.4f s "
+  std::printf("sliding_beam, %d + %d elements of degree %d, h = %g s, %s: the slider reached B at t = %.4f s "
               "(003: 1.306 s); %ld steps, %ld Newton iterations, %ld factorizations, %ld pattern builds, "
               "%.2f s; mass at (%.4f, %.4f, %.4f) m; max constraint residual %.2e\n",
-              elements, sliding_elements, h, strategy.c_str(), arrival_time, counters.steps,
+              elements, sliding_elements, degree, h, strategy.c_str(), arrival_time, counters.steps,
               counters.newton_iterations, counters.factorizations, counters.pattern_builds,
               counters.wall_seconds, mass_final.x(), mass_final.y(), mass_final.z(), max_residual);
   examples::JsonSummary()
       .add("arrival_time", arrival_time)
-      .add("h", h).add("elements", elements).add("sliding_elements", sliding_elements)
+      .add("h", h).add("elements", elements).add("sliding_elements", sliding_elements).add("degree", degree)
       .add("strategy", strategy)
       .add("steps", static_cast<int>(counters.steps))
       .add("newton_iterations", static_cast<int>(counters.newton_iterations))

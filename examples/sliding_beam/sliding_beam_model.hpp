@@ -17,12 +17,12 @@ struct SlidingBeam {
 };
 
 /// 003 Table 3: the carrier from A = (0, 3, 1) to B = (0, 0, 0) m with `carrier_elements`
-/// quadratic C¹ elements, pinned at both ends to the ground (spherical joints); the sliding beam
+/// C^{p−1} elements of degree `degree` (003: quadratic), pinned at both ends to the ground (spherical joints); the sliding beam
 /// from A to M = (1, 3, 1) m with `sliding_elements`; both 0.01 × 0.01 m, E = 2e8 Pa, ν = 0.3,
 /// ρ = 800 kg/m³; a 1 kg point mass at M (a rigid body pinned to the sliding beam's tip, its
 /// rotational inertia — a 1 kg sphere of 1 cm radius — never loaded); the sliding beam's end at A
 /// slides along the carrier (ζ₀ = 0) and locks at B (ζ = L); gravity 9.81 m/s² along −Z.
-inline SlidingBeam build_sliding_beam(int carrier_elements, int sliding_elements) {
+inline SlidingBeam build_sliding_beam(int carrier_elements, int sliding_elements, int degree = 2) {
   const Eigen::Vector3d A(0, 3, 1), B(0, 0, 0), M(1, 3, 1);
   const core::Material material{.young_modulus = 2e8, .poisson_ratio = 0.3, .density = 800};
   const core::CrossSection section = core::CrossSection::rectangle(0.01, 0.01, material.poisson_ratio);
@@ -30,10 +30,10 @@ inline SlidingBeam build_sliding_beam(int carrier_elements, int sliding_elements
   const core::SectionInertia inertia = core::SectionInertia::from(material, section);
   SlidingBeam s;
   core::Model& model = s.model;
-  s.carrier = model.add_beam({.centerline = iga::straight_line<3>(A, B, carrier_elements, 2),
+  s.carrier = model.add_beam({.centerline = iga::straight_line<3>(A, B, carrier_elements, degree),
                               .stiffness = stiffness, .inertia = inertia,
                               .section_axis_hint = Eigen::Vector3d::UnitX()});
-  s.sliding = model.add_beam({.centerline = iga::straight_line<3>(A, M, sliding_elements, 2),
+  s.sliding = model.add_beam({.centerline = iga::straight_line<3>(A, M, sliding_elements, degree),
                               .stiffness = stiffness, .inertia = inertia});
   const core::GeometricallyExactBeam& carrier = model.beam(s.carrier);
   const core::GeometricallyExactBeam& sliding = model.beam(s.sliding);
