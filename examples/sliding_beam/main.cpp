@@ -136,9 +136,10 @@ int main(int argc, char** argv) try {
   while (integrator.time() < t_end - 0.5 * h) {
     integrator.step();
     if (slide.locked()) {
-      // The step that ended past B: arrival where ζ = L, linearly between the two steps.
-      const double overshoot = zeta() - slide.lock_position();
-      arrival_time = integrator.time() - h * overshoot / (zeta() - previous_zeta);
+      // The step that ended past B (the integrator has since projected the slider back onto the
+      // stop): arrival where ζ = L, linearly between the two steps.
+      const double overshoot = slide.zeta_at_lock() - slide.lock_position();
+      arrival_time = integrator.time() - h * overshoot / (slide.zeta_at_lock() - previous_zeta);
       record();
       break;
     }

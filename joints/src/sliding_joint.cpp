@@ -172,6 +172,7 @@ bool SlidingJoint::update_structure(const core::Configuration& q, const Eigen::V
   const auto lock = [&](double stop, const char* which) {
     locked_ = true;
     lock_position_ = stop;
+    zeta_at_lock_ = z;
     description = "sliding joint '" + name_ + "' locked at its " + which + " stop zeta = " +
                   number(stop) + " (zeta = " + number(z) + " after the step)";
   };

@@ -239,12 +239,12 @@ TEST_CASE("sliding joint: zeta in metres keeps the start-up matrix's conditionin
     const joints::SlidingJoint joint({.slider = {.node = bead}, .carrier = 0, .zeta = 0.3 * length}, model);
     const Eigen::MatrixXd B = test::jacobian(joint, model.state(), 0);
     CHECK(std::abs(B.col(6).norm() - 1.0) <= 1e-12);
-    Eigen::Matrix<double, 7, 7> S = Eigen::Matrix<double, 7, 7>::Zero();
+    Eigen::MatrixXd S = Eigen::MatrixXd::Zero(7, 7);
     S.topLeftCorner<3, 3>() = 0.5 * Eigen::Matrix3d::Identity();
     S.block<3, 3>(4, 0) = B.leftCols<3>();
     S.block<3, 1>(4, 3) = B.col(6);
-    S.block<4, 3>(0, 4) = S.block<3, 4>(4, 0).transpose();
-    const Eigen::JacobiSVD<Eigen::Matrix<double, 7, 7>> svd(S);
+    S.block<4, 3>(0, 4) = S.block<3, 4>(4, 0).transpose().eval();
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S);
     conditions.push_back(svd.singularValues()(0) / svd.singularValues()(6));
   }
   // Measured 6.5 for m = 0.5 kg (the spread of m, 1 and the coupling); equal across lengths to

@@ -25,7 +25,8 @@ TEST_CASE("sliding beam (003 5.2): arrival at B, element crossings and constrain
     integrator.step();
     const double zeta = setup.model.state().vector(zeta_block)(0);
     if (slide.locked()) {
-      arrival = integrator.time() - h * (zeta - slide.lock_position()) / (zeta - previous_zeta);
+      arrival = integrator.time() -
+                h * (slide.zeta_at_lock() - slide.lock_position()) / (slide.zeta_at_lock() - previous_zeta);
       break;
     }
     max_residual = std::max(max_residual, integrator.constraint_residual());

@@ -51,8 +51,9 @@ struct SlidingJointParameters {
 ///
 /// Beyond an end of the carrier (a step that overshoots an end stop, or a slider running off)
 /// x_B continues as the end's tangent line (eq. J29) so that the iteration can be evaluated; a
-/// converged step there is either locked back onto the stop or, without a stop, reported as a
-/// spar::Error naming the joint and the time by update_structure — never accepted.
+/// converged step there is either locked onto the stop (the integrator then projects the state
+/// back onto it) or, without a stop, reported as a spar::Error naming the joint and the time by
+/// update_structure — never accepted.
 ///
 /// The joint keeps a reference to the carrier beam: the model must outlive it.
 class SlidingJoint final : public Constraint {
@@ -97,6 +98,9 @@ class SlidingJoint final : public Constraint {
   bool locked() const { return locked_; }
   /// The stop the joint locked at (meaningful when locked()).
   double lock_position() const { return lock_position_; }
+  /// ζ at the end of the step after which the joint locked, past the stop (meaningful when
+  /// locked()): with the ζ of the step before, it places the arrival at the stop within the step.
+  double zeta_at_lock() const { return zeta_at_lock_; }
   /// The carrier element at the centre of the current window.
   int window_element() const { return window_element_; }
   const std::string& name() const { return name_; }
@@ -123,6 +127,7 @@ class SlidingJoint final : public Constraint {
   std::optional<double> lower_stop_, upper_stop_;
   bool locked_ = false;
   double lock_position_ = 0.0;
+  double zeta_at_lock_ = 0.0;
   int window_element_ = 0;
   int window_first_ = 0, window_last_ = 0;  ///< control points of the window
   std::vector<int> blocks_;

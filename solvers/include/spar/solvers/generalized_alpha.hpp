@@ -137,6 +137,9 @@ public:
   /// old dofs) that carries velocities, accelerations and the algorithmic acceleration across:
   /// v ← P v, v̇ ← P v̇, a ← P a. Multipliers of constraints whose equation count is unchanged are
   /// kept; the others start from zero (an index-3 multiplier has no history in the method).
+  /// When a constraint's equations changed at an event (an end stop locking), the state is
+  /// projected onto the new constraint set, positions and velocities in the metric of M (a
+  /// plastic impact), and the accelerations restart consistent (docs/dynamics.md D6b).
   void remap(const Eigen::MatrixXd& P);
   /// The events of the run so far (time and what the constraint said), in order.
   const std::vector<std::pair<double, std::string>>& events() const;
