@@ -101,9 +101,7 @@ int main(int argc, char** argv) try {
     const core::Configuration& q = model.state();
     const solvers::Energies energy = integrator.energies();
     const double residual = integrator.constraint_residual();
-    // After the lock the 4th equation ζ = L still carries the step's overshoot past B (it holds
-    // from the next step on): only the free slider's residuals count.
-    if (!slide.locked()) max_residual = std::max(max_residual, residual);
+    max_residual = std::max(max_residual, residual);
     const Eigen::Vector3d mass_position = q.position[mass], slider_position = sliding.position_at(q, 0.0);
     const Eigen::MatrixXd carrier_line = carrier.sample_centerline(q, carrier_samples);
     const Eigen::MatrixXd sliding_line = sliding.sample_centerline(q, sliding_samples);
