@@ -140,9 +140,11 @@ struct GeneralizedAlpha::Implementation {
   }
 
   /// Scaled residual [r/β′ ; Φ] at the current state (the iteration matrix too when `c` is given).
-  void evaluate(double time, const MatrixCoefficients* c, double residual_scale) {
+  /// With `exact_mass`, the frozen strategy's stored rotation blocks are not used (the start-up and
+  /// event projections need the true M).
+  void evaluate(double time, const MatrixCoefficients* c, double residual_scale, bool exact_mass = false) {
     ++counters.residual_evaluations;
-    const bool frozen = options.iteration_matrix == IterationMatrix::frozen && initialized;
+    const bool frozen = options.iteration_matrix == IterationMatrix::frozen && initialized && !exact_mass;
     assembly.evaluate(input(time), lambda, c, Chart::local_increment, increment, frozen);
     auto dynamic = assembly.residual().head(assembly.dof_count());
     for (int dof : model.fixed_dofs()) dynamic(dof) = 0.0;
@@ -207,7 +209,7 @@ struct GeneralizedAlpha::Implementation {
   /// it with the Dirichlet conditions. It is not an iteration matrix.
   void factorize_mass_and_constraints() {
     const MatrixCoefficients mass_only{.mass = 1.0, .damping = 0.0, .stiffness = 0.0};
-    evaluate(t, &mass_only, 1.0);
+    evaluate(t, &mass_only, 1.0, true);
     factorize(t);
     have_factorization = false;
   }
