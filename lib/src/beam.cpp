@@ -7,6 +7,7 @@
 #include <spar/iga/quadrature.hpp>
 #include <spar/lie/lie.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -145,28 +146,39 @@ void GeometricallyExactBeam::compute_reference_strains(const Configuration& refe
     }
 }
 
-namespace {
-
-/// Element index and basis table at parameter u.
-int element_at(const iga::NurbsCurve<3>& curve, double u, iga::BasisTable& table) {
-  const iga::KnotVector& U = curve.knots();
+CenterlinePoint GeometricallyExactBeam::centerline_point(double u, int order) const {
+  constexpr const char* here = "core::GeometricallyExactBeam::centerline_point";
+  iga::detail::check_derivative_order(order, here);
+  const iga::KnotVector& U = centerline_.knots();
+  if (!(u >= U.first() && u <= U.last()))
+    throw Error("u = " + std::to_string(u) + " is outside the knot range [" +
+                    std::to_string(U.first()) + ", " + std::to_string(U.last()) + "]",
+                here, "give a parameter inside the beam's knot range");
+  CenterlinePoint point;
+  point.parameter = u;
+  point.order = order;
   const int span = U.find_span(u);
-  iga::rational_basis_derivatives(U, span, u, 0, curve.weights(), table);
-  for (int e = 0; e < U.element_count(); ++e)
-    if (U.element(e).span == span) return e;
-  throw Error("no element holds u = " + std::to_string(u), "core::GeometricallyExactBeam",
-              "give a parameter inside the knot range");
+  point.first_control_point = span - degree_;
+  // Elements are ordered by their first control point; the span found is one of them.
+  const auto found = std::lower_bound(
+      elements_.begin(), elements_.end(), point.first_control_point,
+      [](const BeamElement& e, int first) { return e.first_control_point < first; });
+  point.element = static_cast<int>(found - elements_.begin());
+  iga::rational_basis_derivatives(U, span, u, order, centerline_.weights(), point.shape);
+  return point;
 }
 
-}  // namespace
+Eigen::Vector3d GeometricallyExactBeam::centerline_derivative(const Configuration& q,
+                                                              const CenterlinePoint& point,
+                                                              int k) const {
+  const int first = node(point.first_control_point);
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  for (int I = 0; I <= degree_; ++I) x += point.shape(k, I) * q.position[first + I];
+  return x;
+}
 
 Eigen::Vector3d GeometricallyExactBeam::position_at(const Configuration& q, double u) const {
-  iga::BasisTable table;
-  const int e = element_at(centerline_, u, table);
-  const int first = node(elements_[e].first_control_point);
-  Eigen::Vector3d x = Eigen::Vector3d::Zero();
-  for (int I = 0; I <= degree_; ++I) x += table(0, I) * q.position[first + I];
-  return x;
+  return centerline_derivative(q, centerline_point(u, 0), 0);
 }
 
 Eigen::MatrixXd GeometricallyExactBeam::sample_centerline(const Configuration& q, int points) const {
@@ -183,11 +195,10 @@ Eigen::MatrixXd GeometricallyExactBeam::sample_centerline(const Configuration& q
 }
 
 Eigen::Matrix3d GeometricallyExactBeam::rotation_at(const Configuration& q, double u) const {
-  iga::BasisTable table;
-  const int e = element_at(centerline_, u, table);
-  const detail::RelativeRotations rel = detail::relative_rotations(*this, e, q);
+  const CenterlinePoint point = centerline_point(u, 0);
+  const detail::RelativeRotations rel = detail::relative_rotations(*this, point.element, q);
   Eigen::Vector3d theta = Eigen::Vector3d::Zero();
-  for (int I = 0; I <= degree_; ++I) theta += table(0, I) * rel.psi[I];
+  for (int I = 0; I <= degree_; ++I) theta += point.shape(0, I) * rel.psi[I];
   return rel.reference * lie::exp(theta);  // 003 eq. 42
 }
 

@@ -141,9 +141,11 @@ struct GeneralizedAlpha::Implementation {
   }
 
   /// Scaled residual [r/β′ ; Φ] at the current state (the iteration matrix too when `c` is given).
-  void evaluate(double time, const MatrixCoefficients* c, double residual_scale) {
+  /// With `exact_mass`, the frozen strategy's stored rotation blocks are not used (the start-up and
+  /// event projections need the true M).
+  void evaluate(double time, const MatrixCoefficients* c, double residual_scale, bool exact_mass = false) {
     ++counters.residual_evaluations;
-    const bool frozen = options.iteration_matrix == IterationMatrix::frozen && initialized;
+    const bool frozen = options.iteration_matrix == IterationMatrix::frozen && initialized && !exact_mass;
     assembly.evaluate(input(time), lambda, c, Chart::local_increment, increment, frozen);
     auto dynamic = assembly.residual().head(assembly.dof_count());
     for (int dof : model.fixed_dofs()) dynamic(dof) = 0.0;
@@ -204,31 +206,89 @@ struct GeneralizedAlpha::Implementation {
     initialized = true;
   }
 
-  /// v̇ and λ consistent with the equations at the current (q, v, t), and a = v̇: the method's
-  /// start at t = 0, and its restart after an event changed the equations.
-  void consistent_accelerations() {
-    acceleration.setZero();
-    lambda.setZero();
+  /// Assembles [M Bᵀ; B 0] at the current state (the residual then holds [r ; Φ]) and factorizes
+  /// it with the Dirichlet conditions. It is not an iteration matrix.
+  void factorize_mass_and_constraints() {
     const MatrixCoefficients mass_only{.mass = 1.0, .damping = 0.0, .stiffness = 0.0};
-    evaluate(t, &mass_only, 1.0);
+    evaluate(t, &mass_only, 1.0, true);
+    factorize(t);
+    have_factorization = false;
+  }
+
+  /// The constraint terms of every constraint (acceleration terms c or Φ_t) into `out`'s
+  /// multiplier rows.
+  template <class Terms>
+  void constraint_terms(Eigen::VectorXd& out, const Terms& terms) const {
     const int n = assembly.dof_count();
     for (std::size_t ci = 0; ci < constraints.size(); ++ci) {
       const int m = constraints[ci]->equation_count();
-      Eigen::VectorXd c(m);
-      constraints[ci]->acceleration_terms(model.state(), velocity, t, c);
-      assembly.residual().segment(n + assembly.first_multiplier(static_cast<int>(ci)), m) = c;
+      terms(*constraints[ci], out.segment(n + assembly.first_multiplier(static_cast<int>(ci)), m));
     }
+  }
+
+  /// v̇ and λ consistent with the equations at the current (q, v, t), and a = v̇: the method's
+  /// start at t = 0, and its restart after an event changed the equations.
+  /// M v̇ + Bᵀλ = −(f_qv + f_int − f_ext), B v̇ = −c(q, v, t).
+  void consistent_accelerations() {
+    acceleration.setZero();
+    lambda.setZero();
+    factorize_mass_and_constraints();
+    const int n = assembly.dof_count();
     solution = -assembly.residual();
-    assembly.pattern().apply_dirichlet(model.fixed_dofs(), solution);
-    factorize(t);
-    have_factorization = false;  // this matrix is not an iteration matrix
+    constraint_terms(solution, [&](const joints::Constraint& c, Eigen::Ref<Eigen::VectorXd> out) {
+      c.acceleration_terms(model.state(), velocity, t, out);
+      out = -out;
+    });
+    for (int dof : model.fixed_dofs()) solution(dof) = 0.0;
     solver->solve(solution);
     acceleration = solution.head(n);
     algorithmic_acceleration = acceleration;
     lambda = solution.tail(assembly.multiplier_count());
     if (!solution.allFinite())
-      throw Error("the initial accelerations are not finite", "solvers::GeneralizedAlpha::initialize",
-                  "check the model's masses, loads and initial velocities for NaN or infinite values");
+      throw Error("the consistent accelerations are not finite at t = " + std::to_string(t),
+                  "solvers::GeneralizedAlpha",
+                  "check the model's masses, loads and velocities for NaN or infinite values");
+  }
+
+  /// After an event that changed the constraint equations (an end stop locking a slider), the
+  /// state may violate the new constraints (the slider passed its stop within the step) and move
+  /// against them. Projects the positions onto Φ = 0 and the velocities onto B v + Φ_t = 0 in the
+  /// metric of the mass matrix — the perfectly plastic impact the event stands for, whose energy
+  /// loss shows in the numerical dissipation — and restarts from consistent accelerations
+  /// (docs/dynamics.md, "Events"). Without it the index-3 method meets the new constraint within
+  /// one step and its velocity rings, gaining energy.
+  void project_onto_constraints() {
+    const int n = assembly.dof_count(), m = assembly.multiplier_count();
+    for (int iteration = 0;; ++iteration) {
+      factorize_mass_and_constraints();
+      if (constraint_norm() <= options.constraint_tolerance) break;
+      if (iteration == options.max_iterations)
+        throw Error("the configuration could not be projected onto the constraints after the event "
+                    "at t = " + std::to_string(t) + " (|Phi| = " + std::to_string(constraint_norm()) + ")",
+                    "solvers::GeneralizedAlpha", "check the event's new constraint: it should be "
+                    "reachable from the state where the event happened");
+      // [M Bᵀ; B 0] [Δ; μ] = [0; −Φ]: the M-orthogonal correction (Gauss–Newton).
+      solution.setZero();
+      solution.tail(m) = -assembly.residual().tail(m);
+      solver->solve(solution);
+      model.state().apply_increment(solution.head(n));
+    }
+    // [M Bᵀ; B 0] [Δv; μ] = [0; −(B v + Φ_t)], B v read off the assembled matrix.
+    Eigen::VectorXd state = Eigen::VectorXd::Zero(assembly.size());
+    state.head(n) = velocity;
+    solution = assembly.pattern().matrix() * state;
+    solution.head(n).setZero();
+    constraint_terms(solution, [&](const joints::Constraint& c, Eigen::Ref<Eigen::VectorXd> out) {
+      Eigen::VectorXd phi_t(out.size());
+      c.time_derivative(model.state(), t, phi_t);
+      out = -(out + phi_t);
+    });
+    solver->solve(solution);
+    velocity += solution.head(n);
+    for (int dof : model.fixed_dofs()) velocity(dof) = 0.0;
+    consistent_accelerations();
+    evaluate(t, nullptr, 1.0);
+    last_work_force = work_force();
   }
 
   double mechanical_energy() const {
@@ -460,22 +520,29 @@ struct GeneralizedAlpha::Implementation {
   /// the model changed the structure. After an event the method restarts from accelerations
   /// consistent with the new equations: the algorithmic acceleration a is an O(h)-shifted mean of
   /// v̇ under the old equations (a released mass would keep its pendulum's), and carrying it
-  /// across makes every later step first-order accurate.
+  /// across makes every later step first-order accurate. When an event changed a constraint's
+  /// equations the state is first projected onto them (project_onto_constraints).
   void handle_events() {
     bool changed = model.structure_version() != structure_version, event = false;
+    bool equations_changed = false;
     for (auto& constraint : constraints) {
+      const int before = constraint->equation_count();
       std::string description;
       if (constraint->update_structure(model.state(), velocity, t, description)) {
         changed = event = true;
         events.emplace_back(t, description);
       }
+      equations_changed = equations_changed || constraint->equation_count() != before;
     }
     if (!changed) return;
     rebuild(nullptr);
-    if (!event) return;
-    consistent_accelerations();
-    evaluate(t, nullptr, 1.0);
-    last_work_force = work_force();
+    if (equations_changed) {
+      project_onto_constraints();  // a new equation: onto it, then a consistent restart
+    } else if (event) {
+      consistent_accelerations();
+      evaluate(t, nullptr, 1.0);
+      last_work_force = work_force();
+    }
   }
 
   /// Rebuilds the pattern and the symbolic factorization; carries v, v̇, a through P (if the dof

@@ -7,6 +7,9 @@
 
 #include "allocation_counter.hpp"
 
+#include <spar/core/model.hpp>
+#include <spar/iga/straight_line.hpp>
+
 #include <array>
 #include <cmath>
 
@@ -30,6 +33,20 @@ TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
   const joints::AngleDriver angle(1, axis, joints::TimeFunction::linear(2.0), q0);
   const std::array<const joints::Constraint*, 6> constraints = {&spherical, &revolute, &clamp,
                                                                 &prismatic, &position, &angle};
+  // The sliding joint, on a carrier of 4 quadratic elements, locked (4 equations).
+  core::Model model;
+  model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 0, 0), 4, 2),
+                  .stiffness = {.axial = 1, .shear_2 = 1, .shear_3 = 1, .torsion = 1, .bending_2 = 1, .bending_3 = 1}});
+  const int slider = model.add_frame(Eigen::Vector3d(1.1, 0, 0), Eigen::Matrix3d::Identity());
+  joints::SlidingJoint sliding({.slider = {.node = slider}, .carrier = 0, .zeta = 1.1, .upper_stop = 1.5}, model);
+  core::Configuration q_sliding = model.state();
+  q_sliding.vector(sliding.zeta_block())(0) = 1.6;
+  std::string description;
+  sliding.update_structure(q_sliding, Eigen::VectorXd::Zero(q_sliding.dof_count()), 0.0, description);
+  REQUIRE(sliding.locked());
+  const Eigen::Index sliding_dofs = core::block_dof_count(q_sliding, sliding.blocks());
+  const Eigen::VectorXd sliding_velocity = Eigen::VectorXd::Constant(q_sliding.dof_count(), 0.5);
+  Eigen::MatrixXd B_sliding(4, sliding_dofs), K_sliding(sliding_dofs, sliding_dofs);
 
   const core::Configuration q = test::random_configuration(3, random);
   const Eigen::VectorXd velocity = Eigen::VectorXd::Constant(q.dof_count(), 0.5);
@@ -52,6 +69,11 @@ TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
     constraint->time_derivative(q, 0.3, phi.head(m));
     sink += phi.head(m).sum();
   }
+  sliding.value(q_sliding, 0.3, phi.head(4));
+  sliding.jacobian(q_sliding, 0.3, B_sliding);
+  sliding.multiplier_tangent(q_sliding, 0.3, lambda.head(4), K_sliding);
+  sliding.acceleration_terms(q_sliding, sliding_velocity, 0.3, phi.head(4));
+  sink += phi.head(4).sum() + B_sliding.sum() + K_sliding.sum();
   const long after = spar::test::allocation_count();
   CHECK(after == before);
   CHECK(std::isfinite(sink));

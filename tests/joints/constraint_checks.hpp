@@ -49,15 +49,24 @@ inline Eigen::Vector3d random_vector(RandomRotations& random, double size) {
   return {random.uniform(-size, size), random.uniform(-size, size), random.uniform(-size, size)};
 }
 
-/// q ⊕ Δ for the increment Δ of the constraint's local dofs (6 per node of nodes()).
-inline core::Configuration plus(const core::Configuration& q, const std::vector<int>& nodes,
+/// q ⊕ Δ for the increment Δ of the constraint's local dofs (the increments of its blocks, block
+/// after block: 6 for a frame, n for a vector block).
+inline core::Configuration plus(const core::Configuration& q, const std::vector<int>& blocks,
                                 const Eigen::VectorXd& local) {
   Eigen::VectorXd delta = Eigen::VectorXd::Zero(q.dof_count());
-  for (std::size_t k = 0; k < nodes.size(); ++k)
-    delta.segment<6>(6 * nodes[k]) = local.segment<6>(6 * static_cast<Eigen::Index>(k));
+  Eigen::Index column = 0;
+  for (const int b : blocks) {
+    delta.segment(q.blocks[b].offset, q.blocks[b].size) = local.segment(column, q.blocks[b].size);
+    column += q.blocks[b].size;
+  }
   core::Configuration result = q;
   result.apply_increment(delta);
   return result;
+}
+
+/// The number of local dofs of a constraint in q.
+inline Eigen::Index local_dofs(const joints::Constraint& c, const core::Configuration& q) {
+  return core::block_dof_count(q, c.blocks());
 }
 
 inline Eigen::VectorXd value(const joints::Constraint& c, const core::Configuration& q, double t) {
@@ -68,7 +77,7 @@ inline Eigen::VectorXd value(const joints::Constraint& c, const core::Configurat
 
 inline Eigen::MatrixXd jacobian(const joints::Constraint& c, const core::Configuration& q,
                                 double t) {
-  Eigen::MatrixXd B(c.equation_count(), 6 * static_cast<Eigen::Index>(c.blocks().size()));
+  Eigen::MatrixXd B(c.equation_count(), local_dofs(c, q));
   c.jacobian(q, t, B);
   return B;
 }
@@ -77,7 +86,7 @@ inline Eigen::MatrixXd jacobian(const joints::Constraint& c, const core::Configu
 template <class F>
 Eigen::MatrixXd central_difference(const joints::Constraint& c, const core::Configuration& q,
                                    F&& f) {
-  const Eigen::Index n = 6 * static_cast<Eigen::Index>(c.blocks().size());
+  const Eigen::Index n = local_dofs(c, q);
   Eigen::MatrixXd D;
   for (Eigen::Index i = 0; i < n; ++i) {
     const Eigen::VectorXd step = fd_step * Eigen::VectorXd::Unit(n, i);
@@ -103,7 +112,7 @@ inline DerivativeErrors derivative_errors(const joints::Constraint& c, const cor
                                           double t, RandomRotations& random) {
   DerivativeErrors errors;
   const int m = c.equation_count();
-  const Eigen::Index n = 6 * static_cast<Eigen::Index>(c.blocks().size());
+  const Eigen::Index n = local_dofs(c, q);
 
   // B = ∂Φ(q ⊕ Δ)/∂Δ.
   const Eigen::MatrixXd B = jacobian(c, q, t);
@@ -120,29 +129,31 @@ inline DerivativeErrors derivative_errors(const joints::Constraint& c, const cor
                        return Eigen::VectorXd(jacobian(c, p, t).transpose() * lambda);
                      }));
 
-  // Φ̈ = B v̇ + c along x(s) = x + v s + ½ a s², R(s) = R exp(Ω s + ½ α s²), every node moving
-  // (nodes outside the joint too, so reading another node's velocity would show).
-  const int count = q.block_count();
+  // Φ̈ = B v̇ + c along x(s) = x + v s + ½ a s², R(s) = R exp(Ω s + ½ α s²), p(s) = p + v s + ½ a s²
+  // for vector blocks, every block moving (blocks outside the joint too, so reading another
+  // block's velocity would show).
   const Eigen::VectorXd velocity =
-      Eigen::VectorXd::NullaryExpr(6 * count, [&] { return random.uniform(-1, 1); });
+      Eigen::VectorXd::NullaryExpr(q.dof_count(), [&] { return random.uniform(-1, 1); });
   const Eigen::VectorXd acceleration =
-      Eigen::VectorXd::NullaryExpr(6 * count, [&] { return random.uniform(-1, 1); });
+      Eigen::VectorXd::NullaryExpr(q.dof_count(), [&] { return random.uniform(-1, 1); });
   const auto moved = [&](double s) {
     core::Configuration p = q;
-    for (int k = 0; k < count; ++k) {
-      const Eigen::Matrix<double, 6, 1> d =
-          velocity.segment<6>(6 * k) * s + 0.5 * acceleration.segment<6>(6 * k) * s * s;
-      p.position[k] += d.head<3>();
-      p.rotation[k] = q.rotation[k] * lie::exp(Eigen::Vector3d(d.tail<3>()));
+    const Eigen::VectorXd d = velocity * s + 0.5 * acceleration * s * s;
+    for (int k = 0; k < q.block_count(); ++k) {
+      const core::Block& b = q.blocks[k];
+      if (q.is_frame(k)) {
+        p.position[k] += d.segment<3>(b.offset);
+        p.rotation[k] = q.rotation[k] * lie::exp(Eigen::Vector3d(d.segment<3>(b.offset + 3)));
+      } else {
+        p.vector(k) += d.segment(b.offset, b.size);
+      }
     }
     return value(c, p, t + s);
   };
   const double h = acceleration_step;
   const Eigen::VectorXd second_difference = (moved(h) - 2 * moved(0) + moved(-h)) / (h * h);
   Eigen::VectorXd local_acceleration(n);
-  for (std::size_t k = 0; k < c.blocks().size(); ++k)
-    local_acceleration.segment<6>(6 * static_cast<Eigen::Index>(k)) =
-        acceleration.segment<6>(6 * c.blocks()[k]);
+  core::gather(q, c.blocks(), acceleration, local_acceleration);
   Eigen::VectorXd terms(m);
   c.acceleration_terms(q, velocity, t, terms);
   errors.acceleration_terms = relative_error(B * local_acceleration + terms, second_difference);

@@ -50,6 +50,20 @@ struct BeamGaussPoint {
   Eigen::Vector3d reference_curvature = Eigen::Vector3d::Zero();             ///< κ₀
 };
 
+/// A point of the centerline at parameter u as a combination of control points (003 eq. 53,
+/// docs/beam.md eq. B15): x(u) = Σ_I N_I(u) x_{first+I}, d^k x/du^k = Σ_I N_I^(k)(u) x_{first+I}.
+/// The weights are also the derivatives of the point with respect to the control points,
+/// ∂x/∂x_I = N_I I₃ and ∂(d^k x/du^k)/∂x_I = N_I^(k) I₃ (the centerline's position does not
+/// depend on the rotations). What a joint gripping the centerline (a sliding joint) needs.
+struct CenterlinePoint {
+  double parameter = 0.0;       ///< u
+  int element = 0;              ///< the beam element (non-zero knot span) holding u
+  int first_control_point = 0;  ///< the point depends on control points first … first + degree
+  int order = 0;                ///< the highest derivative in `shape`
+  /// shape(k, I) = d^k N_{first+I}/du^k for k = 0 … order, I = 0 … degree (NURBS basis).
+  iga::BasisTable shape = iga::BasisTable::Zero();
+};
+
 /// One element: its first control point (global node = first_node() + first_control_point) and
 /// its Gauss points.
 struct BeamElement {
@@ -84,6 +98,14 @@ public:
   /// by the same interpolation as the strains (003 eqs. 39, 40, 42).
   Eigen::Vector3d position_at(const Configuration& q, double u) const;
   Eigen::Matrix3d rotation_at(const Configuration& q, double u) const;
+  /// The centerline point at parameter u with its basis derivatives up to `order`
+  /// (0 ≤ order ≤ iga::max_derivative_order): the element is found by u itself, so any u of the
+  /// knot range works, across element boundaries; at an interior knot the element on its right is
+  /// used (the left one at the last knot). Throws spar::Error for u outside the knot range.
+  CenterlinePoint centerline_point(double u, int order) const;
+  /// d^k x/du^k = Σ_I shape(k, I) x_I in configuration q (k ≤ point.order).
+  Eigen::Vector3d centerline_derivative(const Configuration& q, const CenterlinePoint& point,
+                                        int k) const;
   /// The centerline at `points` ≥ 2 parameters equally spaced over the knot range, one row each
   /// (what results files and plots draw).
   Eigen::MatrixXd sample_centerline(const Configuration& q, int points) const;

@@ -143,7 +143,10 @@ public:
   /// with DynamicOptions::increment_units needs the new layout's units, one per new dof (they
   /// replace the old ones; refused when missing or misfitting). An element or block changed
   /// without a new dof count is taken in by the next step() itself; a new dof count without
-  /// remap is refused there.
+  /// remap is refused there. When a constraint's equations changed at an event (an end stop
+  /// locking), the state is projected onto the new constraint set, positions and velocities in
+  /// the metric of M (a plastic impact), and the accelerations restart consistent
+  /// (docs/dynamics.md D6b).
   void remap(const Eigen::MatrixXd& P, const Eigen::VectorXd& increment_units = {});
   /// The events of the run so far (time and what the constraint said), in order.
   const std::vector<std::pair<double, std::string>>& events() const;
