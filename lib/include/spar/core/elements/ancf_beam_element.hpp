@@ -1,0 +1,148 @@
+#pragma once
+/// \file
+/// Fully parameterized three-dimensional ANCF beam elements (Shabana & Yakoub; 001 §2 and §5;
+/// docs/ancf.md). The position of a material point (x along the reference line, y and z in the
+/// section) is r(x, y, z) = r₀(x) + y r_y(x) + z r_z(x) (001 eqs. 5, 24, 56):
+///   - r₀ cubic Hermite in the nodal r and r_x,
+///   - r_y, r_z interpolated from their nodal values: linearly in the 24-coordinate element
+///     (001 eq. 5), quadratically in the 30-coordinate element of 001 eqs. (52)–(57), whose six
+///     extra coordinates (the x²y and x²z terms) are the element's own vector block.
+/// Each node is a vector block of 12 coordinates (r, r_x, r_y, r_z). The reference configuration
+/// must be straight and undistorted (r_x, r_y, r_z orthonormal), so F = ∂r/∂(x, y, z) is the
+/// deformation gradient and E = ½(FᵀF − I) the Green–Lagrange strain.
+///
+/// Material: St. Venant–Kirchhoff, S = λ tr(E) I + 2μ E. The elastic force and its Jacobian use
+/// the first Piola–Kirchhoff stress P = F S (Gerstmayr & Shabana 2005, 001 eqs. 38–51) integrated
+/// over the section in closed form through the section's moments of order ≤ 4
+/// (core/section_integrals.hpp; docs/ancf.md eqs. A11–A16), along the axis by five-point Gauss
+/// (exact: the integrands are polynomials of degree ≤ 8 in x). Mass matrix and gravity are
+/// constant (001 eq. 8).
+
+#include <spar/core/cross_section.hpp>
+#include <spar/core/element.hpp>
+#include <spar/core/section_integrals.hpp>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spar::core {
+
+/// Shape functions of the element with `transverse` functions per transverse gradient (2: the
+/// 24-coordinate element, 3: the 30-coordinate element). Coordinates are grouped in 3-vectors
+/// ("node vectors"), in the element's block order:
+///   0 r_A, 1 r_x,A, 2 r_y,A, 3 r_z,A, 4 r_B, 5 r_x,B, 6 r_y,B, 7 r_z,B[, 8 d_y, 9 d_z].
+template <int transverse>
+struct AncfShapeFunctions {
+  static_assert(transverse == 2 || transverse == 3);
+  static constexpr int node_vectors = 4 + 2 * transverse;
+  static constexpr int dofs = 3 * node_vectors;
+  /// Node vectors interpolated by the Hermite functions (r₀), by the transverse functions (r_y
+  /// and r_z).
+  static constexpr std::array<int, 4> axial_vectors{0, 1, 4, 5};
+  static constexpr std::array<int, transverse> y_vectors = [] {
+    if constexpr (transverse == 2) return std::array<int, 2>{2, 6};
+    else return std::array<int, 3>{2, 6, 8};
+  }();
+  static constexpr std::array<int, transverse> z_vectors = [] {
+    if constexpr (transverse == 2) return std::array<int, 2>{3, 7};
+    else return std::array<int, 3>{3, 7, 9};
+  }();
+
+  /// Hermite functions S1, S2, S5, S6 (001 eq. 5) at ξ = x/l and their x-derivatives.
+  static std::array<double, 4> axial(double xi, double length);
+  static std::array<double, 4> axial_derivative(double xi, double length);
+  /// Transverse functions: (1 − ξ, ξ) (001 eq. 5: S3 = l(η − ξη) = y(1 − ξ), S7 = y ξ) or
+  /// (1 − ξ², ξ², l(ξ − ξ²)) (001 eq. 55: S3 = l(1 − ξ²)η, S7 = lξ²η, S9 = l²(ξ − ξ²)η), and
+  /// their x-derivatives.
+  static std::array<double, transverse> transverse_values(double xi, double length);
+  static std::array<double, transverse> transverse_derivative(double xi, double length);
+};
+
+/// The constant data of one element geometry (length, material, section), shared by all elements
+/// that have it: axial quadrature with the shape functions at its points, the section's moment
+/// tensor, the scalar mass matrix and the gravity weights.
+template <int transverse>
+struct AncfElementTables {
+  using Shape = AncfShapeFunctions<transverse>;
+  static constexpr int n = Shape::node_vectors;
+  static constexpr int points = 5;  ///< axial Gauss points: exact for the degree-8 integrands
+
+  AncfElementTables(double length, const Material& material, const SectionIntegrals& section);
+
+  double length;
+  double lambda;  ///< Lamé λ = Eν/((1 + ν)(1 − 2ν))
+  double mu;      ///< Lamé μ = E/(2(1 + ν))
+  double density;
+  /// M[p][q][i][j] = ∫ φ_p φ_q φ_i φ_j dA with φ = (1, y, z) (docs/ancf.md eq. A12).
+  double moment[3][3][3][3];
+  std::array<double, points> weight;  ///< Gauss weight × l
+  /// Per Gauss point: the coefficients of the node vectors in (a, b, c, g, h) = (r₀′, r_y′, r_z′,
+  /// r_y, r_z), i.e. F = [a + y b + z c, g, h] = Σ B e (docs/ancf.md eq. A7), and the same
+  /// expanded to 3-vectors (15 × dofs).
+  std::array<Eigen::Matrix<double, 5, n>, points> coefficients;
+  std::array<Eigen::Matrix<double, 15, Shape::dofs>, points> gradient_operator;
+  /// Scalar mass matrix m (M = m ⊗ I₃, docs/ancf.md eq. A5) and gravity weights w (f_g = w ⊗ g),
+  /// both with the density.
+  Eigen::Matrix<double, n, n> scalar_mass;
+  Eigen::Matrix<double, n, 1> gravity_weights;
+};
+
+/// The section-integrated strain energy density W̄ = ∫ W dA of a SVK material at one axial point,
+/// its gradient with respect to u = (a, b, c, g, h) (the section resultants of P, docs/ancf.md
+/// eq. A14) and, if `hessian` is not null, its Hessian (eq. A15). Allocation-free.
+double ancf_section_energy(const double (&moment)[3][3][3][3], double lambda, double mu,
+                           const Eigen::Matrix<double, 15, 1>& u, Eigen::Matrix<double, 15, 1>& gradient,
+                           Eigen::Matrix<double, 15, 15>* hessian);
+
+template <int transverse>
+class AncfBeamElement final : public Element {
+public:
+  using Shape = AncfShapeFunctions<transverse>;
+  using Tables = AncfElementTables<transverse>;
+  static constexpr int dofs = Shape::dofs;
+  using Vector = Eigen::Matrix<double, dofs, 1>;
+  using Matrix = Eigen::Matrix<double, dofs, dofs>;
+
+  /// `blocks`: node A (12), node B (12)[, the element's own block of 6]. Throws spar::Error for
+  /// blocks of the wrong size or a reference configuration q0 that is not straight and undistorted
+  /// with the tables' length.
+  AncfBeamElement(std::vector<int> blocks, std::shared_ptr<const Tables> tables,
+                  const Configuration& q0, int index);
+
+  const std::vector<int>& blocks() const override { return blocks_; }
+  void evaluate(const ElementInput& in, const ElementRequest& request,
+                ElementOutput& out) const override;
+  std::string name() const override;
+
+  const Tables& tables() const { return *tables_; }
+  /// U(e) = ∫ W̄ dx.
+  double strain_energy(const Vector& e) const;
+  /// Q = ∂U/∂e (001 eq. 44) and, if K is not null, K = ∂Q/∂e (eq. 51); returns U.
+  /// Allocation-free.
+  double elastic_force(const Vector& e, Vector& Q, Matrix* K) const;
+  /// The constant mass matrix ∫ ρ Sᵀ S dV.
+  Matrix mass_matrix() const;
+  /// The element coordinates e from the configuration.
+  Vector coordinates(const Configuration& q) const;
+
+private:
+  std::vector<int> blocks_;
+  std::shared_ptr<const Tables> tables_;
+  int index_;
+};
+
+using AncfBeam24Element = AncfBeamElement<2>;
+using AncfBeam30Element = AncfBeamElement<3>;
+
+extern template struct AncfShapeFunctions<2>;
+extern template struct AncfShapeFunctions<3>;
+extern template struct AncfElementTables<2>;
+extern template struct AncfElementTables<3>;
+extern template class AncfBeamElement<2>;
+extern template class AncfBeamElement<3>;
+
+}  // namespace spar::core

@@ -1,0 +1,321 @@
+#include <spar/core/elements/ancf_beam_element.hpp>
+
+#include <spar/error.hpp>
+#include <spar/iga/quadrature.hpp>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+
+namespace spar::core {
+
+namespace {
+
+using Matrix3 = Eigen::Matrix3d;
+
+/// The variables u = (a, b, c, g, h) of docs/ancf.md eq. A7 as (φ index p, column α of F):
+/// F = Σ_p φ_p F_p with φ = (1, y, z), F₀ = [a g h], F₁ = [b 0 0], F₂ = [c 0 0].
+constexpr int variable_phi[5] = {0, 1, 2, 0, 0};
+constexpr int variable_column[5] = {0, 0, 0, 1, 2};
+
+}  // namespace
+
+// Shape functions -------------------------------------------------------------------------------
+
+template <int transverse>
+std::array<double, 4> AncfShapeFunctions<transverse>::axial(double xi, double l) {
+  // 001 eq. (5): S1, S2, S5, S6.
+  const double x2 = xi * xi, x3 = x2 * xi;
+  return {1 - 3 * x2 + 2 * x3, l * (xi - 2 * x2 + x3), 3 * x2 - 2 * x3, l * (x3 - x2)};
+}
+
+template <int transverse>
+std::array<double, 4> AncfShapeFunctions<transverse>::axial_derivative(double xi, double l) {
+  const double x2 = xi * xi;
+  return {6 * (x2 - xi) / l, 1 - 4 * xi + 3 * x2, 6 * (xi - x2) / l, 3 * x2 - 2 * xi};
+}
+
+template <int transverse>
+std::array<double, transverse> AncfShapeFunctions<transverse>::transverse_values(double xi, double l) {
+  if constexpr (transverse == 2) {
+    (void)l;
+    return {1 - xi, xi};  // 001 eq. (5)
+  } else {
+    return {1 - xi * xi, xi * xi, l * (xi - xi * xi)};  // 001 eq. (55)
+  }
+}
+
+template <int transverse>
+std::array<double, transverse> AncfShapeFunctions<transverse>::transverse_derivative(double xi, double l) {
+  if constexpr (transverse == 2) {
+    return {-1 / l, 1 / l};
+  } else {
+    return {-2 * xi / l, 2 * xi / l, 1 - 2 * xi};
+  }
+}
+
+// Tables ----------------------------------------------------------------------------------------
+
+template <int transverse>
+AncfElementTables<transverse>::AncfElementTables(double length_, const Material& material,
+                                                 const SectionIntegrals& section)
+    : length(length_), density(material.density) {
+  material.validate();
+  if (!(length > 0.0) || !std::isfinite(length))
+    throw Error("the element length is " + std::to_string(length), "core::AncfElementTables",
+                "give distinct end nodes");
+  const double E = material.young_modulus, nu = material.poisson_ratio;
+  lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  mu = E / (2 * (1 + nu));
+  // M[p][q][i][j] = ∫ φ_p φ_q φ_i φ_j dA, φ = (1, y, z): the moment of y^(#1) z^(#2) (eq. A12).
+  for (int p = 0; p < 3; ++p)
+    for (int q = 0; q < 3; ++q)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const int idx[4] = {p, q, i, j};
+          int ay = 0, az = 0;
+          for (int k : idx) {
+            ay += (k == 1);
+            az += (k == 2);
+          }
+          moment[p][q][i][j] = section.moment(ay, az);
+        }
+
+  const iga::GaussRule rule = iga::gauss_legendre(points);
+  scalar_mass.setZero();
+  gravity_weights.setZero();
+  for (int g = 0; g < points; ++g) {
+    const double xi = 0.5 * (rule.points[g] + 1);
+    weight[g] = 0.5 * rule.weights[g] * length;
+    const auto ax = Shape::axial(xi, length), dax = Shape::axial_derivative(xi, length);
+    const auto tr = Shape::transverse_values(xi, length), dtr = Shape::transverse_derivative(xi, length);
+    Eigen::Matrix<double, 5, n>& B = coefficients[g];
+    B.setZero();
+    // Position r = Σ_p φ_p r_p(x): r₀ (Hermite), r_y, r_z (transverse functions).
+    Eigen::Matrix<double, 3, n> N = Eigen::Matrix<double, 3, n>::Zero();
+    for (int k = 0; k < 4; ++k) {
+      B(0, Shape::axial_vectors[k]) = dax[k];
+      N(0, Shape::axial_vectors[k]) = ax[k];
+    }
+    for (int k = 0; k < transverse; ++k) {
+      B(1, Shape::y_vectors[k]) = dtr[k];
+      B(2, Shape::z_vectors[k]) = dtr[k];
+      B(3, Shape::y_vectors[k]) = tr[k];
+      B(4, Shape::z_vectors[k]) = tr[k];
+      N(1, Shape::y_vectors[k]) = tr[k];
+      N(2, Shape::z_vectors[k]) = tr[k];
+    }
+    gradient_operator[g].setZero();
+    for (int v = 0; v < 5; ++v)
+      for (int k = 0; k < n; ++k)
+        for (int d = 0; d < 3; ++d) gradient_operator[g](3 * v + d, 3 * k + d) = B(v, k);
+    // m = ρ ∫ Σ_pq M_pq00 N_pᵀ N_q dx, w = ρ ∫ Σ_p M_p000 N_p dx (eq. A5).
+    for (int p = 0; p < 3; ++p) {
+      gravity_weights += density * weight[g] * moment[p][0][0][0] * N.row(p).transpose();
+      for (int q = 0; q < 3; ++q)
+        scalar_mass += density * weight[g] * moment[p][q][0][0] * N.row(p).transpose() * N.row(q);
+    }
+  }
+}
+
+// Section kernel --------------------------------------------------------------------------------
+
+double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double mu,
+                           const Eigen::Matrix<double, 15, 1>& u, Eigen::Matrix<double, 15, 1>& gradient,
+                           Eigen::Matrix<double, 15, 15>* hessian) {
+  // F(y, z) = Σ_p φ_p F_p (eq. A7).
+  Matrix3 F[3];
+  F[0] << u.segment<3>(0), u.segment<3>(9), u.segment<3>(12);
+  F[1].setZero();
+  F[1].col(0) = u.segment<3>(3);
+  F[2].setZero();
+  F[2].col(0) = u.segment<3>(6);
+  // E = Σ_ij φ_i φ_j Ê_ij with Ê_ij = ¼(F_iᵀF_j + F_jᵀF_i) − ½ I δ_i0 δ_j0; Ŝ_ij = λ tr Ê_ij I + 2μ Ê_ij
+  // (eq. A13).
+  Matrix3 E[3][3], S[3][3], Sbar[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      Matrix3 Eij = 0.25 * (F[i].transpose() * F[j] + F[j].transpose() * F[i]);
+      if (i == 0 && j == 0) Eij.diagonal().array() -= 0.5;
+      E[i][j] = E[j][i] = Eij;
+      S[i][j] = S[j][i] = lambda * Eij.trace() * Matrix3::Identity() + 2 * mu * Eij;
+    }
+  // S̄_pq = ∫ φ_p φ_q S dA = Σ_ij M_pqij Ŝ_ij.
+  double W = 0.0;
+  for (int p = 0; p < 3; ++p)
+    for (int q = p; q < 3; ++q) {
+      Matrix3 s = Matrix3::Zero();
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) s += M[p][q][i][j] * S[i][j];
+      Sbar[p][q] = Sbar[q][p] = s;
+      W += (p == q ? 0.5 : 1.0) * E[p][q].cwiseProduct(s).sum();  // W̄ = ½ Σ_pq Ê_pq : S̄_pq
+    }
+  // ∂W̄/∂u_v = ∫ φ_p P e_α dA = Σ_k F_k S̄_pk e_α (P = F S; eq. A14).
+  for (int v = 0; v < 5; ++v) {
+    const int p = variable_phi[v], alpha = variable_column[v];
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) g += F[k] * Sbar[p][k].col(alpha);
+    gradient.segment<3>(3 * v) = g;
+  }
+  if (hessian == nullptr) return W;
+  // ∂²W̄/∂u_v∂u_w = ∫ φ_p φ_q [S_αβ I + λ F_α F_βᵀ + μ(δ_αβ F Fᵀ + F_β F_αᵀ)] dA (eq. A15),
+  // with ∫ φ_p φ_q F_α F_βᵀ dA = T_pq(α, β) = Σ_ij M_pqij F_i e_α (F_j e_β)ᵀ.
+  for (int v = 0; v < 5; ++v)
+    for (int w = v; w < 5; ++w) {
+      const int p = variable_phi[v], alpha = variable_column[v];
+      const int q = variable_phi[w], beta = variable_column[w];
+      auto T = [&](int a, int b) {
+        Matrix3 t = Matrix3::Zero();
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j)
+            if (M[p][q][i][j] != 0.0) t.noalias() += M[p][q][i][j] * F[i].col(a) * F[j].col(b).transpose();
+        return t;
+      };
+      Matrix3 block = Sbar[p][q](alpha, beta) * Matrix3::Identity() + lambda * T(alpha, beta) +
+                      mu * T(beta, alpha);
+      if (alpha == beta) block += mu * (T(0, 0) + T(1, 1) + T(2, 2));
+      hessian->block<3, 3>(3 * v, 3 * w) = block;
+      if (w != v) hessian->block<3, 3>(3 * w, 3 * v) = block.transpose();
+    }
+  return W;
+}
+
+// Element ---------------------------------------------------------------------------------------
+
+template <int transverse>
+AncfBeamElement<transverse>::AncfBeamElement(std::vector<int> blocks, std::shared_ptr<const Tables> tables,
+                                             const Configuration& q0, int index)
+    : blocks_(std::move(blocks)), tables_(std::move(tables)), index_(index) {
+  const std::string where = "core::AncfBeamElement (" + name() + ")";
+  const std::size_t expected = transverse == 2 ? 2 : 3;
+  if (blocks_.size() != expected)
+    throw Error("expected " + std::to_string(expected) + " blocks, got " + std::to_string(blocks_.size()),
+                where, "give the two nodes (and, for the 30-coordinate element, its own block of 6)");
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const int want = b < 2 ? 12 : 6;
+    if (blocks_[b] < 0 || blocks_[b] >= q0.block_count() || q0.is_frame(blocks_[b]) ||
+        q0.blocks[blocks_[b]].size != want)
+      throw Error("block " + std::to_string(blocks_[b]) + " is not a vector block of " + std::to_string(want),
+                  where, "nodes are vector blocks (r, r_x, r_y, r_z); the extra block has 6 entries");
+  }
+  // The reference configuration must be strain free: F₀ = [a g h] orthogonal, b = c = 0.
+  const Vector e0 = coordinates(q0);
+  const double l = (e0.template segment<3>(12) - e0.template head<3>()).norm();
+  if (std::fabs(l - tables_->length) > 1e-12 * tables_->length)
+    throw Error("the nodes are " + std::to_string(l) + " apart, the tables' length is " +
+                    std::to_string(tables_->length), where, "build the tables for this element's length");
+  for (int g = 0; g < Tables::points; ++g) {
+    const Eigen::Matrix<double, 15, 1> u = tables_->gradient_operator[g] * e0;
+    Matrix3 F0;
+    F0 << u.template segment<3>(0), u.template segment<3>(9), u.template segment<3>(12);
+    const double distortion = (F0.transpose() * F0 - Matrix3::Identity()).norm() +
+                              l * (u.template segment<6>(3).norm());
+    if (!(distortion < 1e-9))
+      throw Error("the reference configuration is not straight and undistorted (|F0ᵀF0 − I| + l|∇r_y,z| = " +
+                      std::to_string(distortion) + ")",
+                  where, "place the nodes on a line with orthonormal r_x, r_y, r_z (core/ancf_beam.hpp)");
+  }
+}
+
+template <int transverse>
+std::string AncfBeamElement<transverse>::name() const {
+  return "ANCF beam element " + std::to_string(index_) + " (" + std::to_string(dofs) + " coordinates)";
+}
+
+template <int transverse>
+typename AncfBeamElement<transverse>::Vector AncfBeamElement<transverse>::coordinates(const Configuration& q) const {
+  Vector e;
+  int k = 0;
+  for (int b : blocks_) {
+    const int size = q.blocks[b].size;
+    e.segment(k, size) = q.values.segment(q.blocks[b].offset, size);
+    k += size;
+  }
+  return e;
+}
+
+template <int transverse>
+double AncfBeamElement<transverse>::strain_energy(const Vector& e) const {
+  Vector Q;
+  return elastic_force(e, Q, nullptr);
+}
+
+template <int transverse>
+double AncfBeamElement<transverse>::elastic_force(const Vector& e, Vector& Q, Matrix* K) const {
+  const Tables& t = *tables_;
+  double U = 0.0;
+  Q.setZero();
+  if (K != nullptr) K->setZero();
+  Eigen::Matrix<double, 15, 1> gradient;
+  Eigen::Matrix<double, 15, 15> hessian;
+  Eigen::Matrix<double, 15, dofs> HG;
+  for (int g = 0; g < Tables::points; ++g) {
+    const Eigen::Matrix<double, 15, dofs>& G = t.gradient_operator[g];
+    U += t.weight[g] * ancf_section_energy(t.moment, t.lambda, t.mu, G * e, gradient,
+                                           K != nullptr ? &hessian : nullptr);
+    // Q = ∫ Gᵀ ∂W̄/∂u dx, K = ∫ Gᵀ ∂²W̄/∂u² G dx (eq. A16).
+    Q.noalias() += t.weight[g] * G.transpose() * gradient;
+    if (K != nullptr) {
+      HG.noalias() = hessian * G;
+      K->noalias() += t.weight[g] * G.transpose() * HG;
+    }
+  }
+  return U;
+}
+
+template <int transverse>
+typename AncfBeamElement<transverse>::Matrix AncfBeamElement<transverse>::mass_matrix() const {
+  Matrix M = Matrix::Zero();
+  for (int k = 0; k < Tables::n; ++k)
+    for (int l = 0; l < Tables::n; ++l)
+      M.template block<3, 3>(3 * k, 3 * l) = tables_->scalar_mass(k, l) * Matrix3::Identity();
+  return M;
+}
+
+template <int transverse>
+void AncfBeamElement<transverse>::evaluate(const ElementInput& in, const ElementRequest& request,
+                                           ElementOutput& out) const {
+  const Tables& t = *tables_;
+  const Vector e = coordinates(*in.q);
+  Vector Q;
+  Matrix K;
+  const double U = elastic_force(e, Q, request.stiffness ? &K : nullptr);
+  // Weight f_g = ∫ ρ Sᵀ g dV = w ⊗ g, scaled by the load factor.
+  Vector weight;
+  for (int k = 0; k < Tables::n; ++k)
+    weight.template segment<3>(3 * k) = in.load_factor * t.gravity_weights(k) * in.gravity;
+  if (request.residual) out.residual += Q - weight;
+  if (request.stiffness) out.stiffness += K;
+  // Energies are always filled (cheap here), as the solvers read them after every evaluation.
+  out.energy.strain = U;
+  out.energy.gravity = -weight.dot(e);
+  if (!in.dynamic()) return;
+  Vector v, a;
+  gather(*in.q, blocks_, *in.velocity, v);
+  gather(*in.q, blocks_, *in.acceleration, a);
+  // Constant mass matrix: M v̇, no velocity terms (001 eq. 8).
+  {
+    Vector Ma, Mv;
+    for (int k = 0; k < Tables::n; ++k) {
+      Eigen::Vector3d ma = Eigen::Vector3d::Zero(), mv = Eigen::Vector3d::Zero();
+      for (int l = 0; l < Tables::n; ++l) {
+        ma += t.scalar_mass(k, l) * a.template segment<3>(3 * l);
+        mv += t.scalar_mass(k, l) * v.template segment<3>(3 * l);
+      }
+      Ma.template segment<3>(3 * k) = ma;
+      Mv.template segment<3>(3 * k) = mv;
+    }
+    if (request.residual) out.residual += Ma;
+    out.energy.kinetic = 0.5 * v.dot(Mv);
+  }
+  if (request.mass) out.mass += mass_matrix();
+}
+
+template struct AncfShapeFunctions<2>;
+template struct AncfShapeFunctions<3>;
+template struct AncfElementTables<2>;
+template struct AncfElementTables<3>;
+template class AncfBeamElement<2>;
+template class AncfBeamElement<3>;
+
+}  // namespace spar::core
