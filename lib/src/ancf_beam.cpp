@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <memory>
 
 namespace spar::core {
@@ -16,7 +17,7 @@ template <int transverse>
 void add_elements(Model& model, const AncfBeamParameters& p, double l, AncfBeam& beam) {
   // Equal elements share one set of tables (001 §6: "the invariants can be shared for elements
   // with equal dimensions").
-  const auto tables = std::make_shared<const AncfElementTables<transverse>>(l, p.material, p.section);
+  const auto tables = std::make_shared<const AncfElementTables<transverse>>(l, p.material, p.section, p.method);
   for (int e = 0; e < p.elements; ++e) {
     std::vector<int> blocks{beam.nodes[e], beam.nodes[e + 1]};
     if constexpr (transverse == 3) {
@@ -59,6 +60,23 @@ AncfBeam add_ancf_beam(Model& model, const AncfBeamParameters& p) {
 
 Eigen::Vector3d ancf_node_position(const Configuration& q, int node) {
   return q.vector(node).head<3>();
+}
+
+Eigen::MatrixXd sample_ancf_centerline(const Configuration& q, const AncfBeam& beam, int samples) {
+  if (samples < 2 || beam.nodes.size() < 2)
+    throw Error("need at least 2 samples of a beam with an element", "core::sample_ancf_centerline",
+                "ask for 2 or more samples");
+  const int elements = static_cast<int>(beam.nodes.size()) - 1;
+  Eigen::MatrixXd points(samples, 3);
+  for (int i = 0; i < samples; ++i) {
+    const double s = static_cast<double>(i) * elements / (samples - 1);
+    const int e = std::min(static_cast<int>(s), elements - 1);
+    // r₀ = S1 r_A + S2 r_x,A + S5 r_B + S6 r_x,B (the axial functions are those of both kinds).
+    const auto S = AncfShapeFunctions<2>::axial(s - e, beam.element_length);
+    const auto A = q.vector(beam.nodes[e]), B = q.vector(beam.nodes[e + 1]);
+    points.row(i) = (S[0] * A.head<3>() + S[1] * A.segment<3>(3) + S[2] * B.head<3>() + S[3] * B.segment<3>(3)).transpose();
+  }
+  return points;
 }
 
 int add_ancf_nodal_force(Model& model, int node, const Eigen::Vector3d& force, LoadHistory history) {

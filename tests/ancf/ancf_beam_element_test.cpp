@@ -31,12 +31,14 @@ struct OneElement {
   core::Model model;
   const core::AncfBeamElement<transverse>* element = nullptr;
 
-  explicit OneElement(const core::SectionIntegrals& section) {
+  explicit OneElement(const core::SectionIntegrals& section,
+                      core::AncfForceMethod method = core::AncfForceMethod::gerstmayr) {
     const core::AncfBeam beam = core::add_ancf_beam(
         model, {.start = Eigen::Vector3d(0.1, -0.2, 0.3),
                 .end = Eigen::Vector3d(0.1, -0.2, 0.3) + length * Eigen::Vector3d(1, 2, 2) / 3.0,
                 .y_direction = Eigen::Vector3d(0, 0, 1),
                 .kind = transverse == 2 ? core::AncfElementKind::standard_24 : core::AncfElementKind::higher_order_30,
+                .method = method,
                 .material = material,
                 .section = section});
     element = dynamic_cast<const core::AncfBeamElement<transverse>*>(&model.element(beam.elements[0]));
@@ -58,8 +60,8 @@ double relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& reference
 }
 
 template <int transverse>
-void check_against_finite_differences(const core::SectionIntegrals& section) {
-  OneElement<transverse> one(section);
+void check_against_finite_differences(const core::SectionIntegrals& section, core::AncfForceMethod method) {
+  OneElement<transverse> one(section, method);
   using Vector = typename core::AncfBeamElement<transverse>::Vector;
   using Matrix = typename core::AncfBeamElement<transverse>::Matrix;
   for (unsigned seed : {1u, 2u, 3u}) {
@@ -113,10 +115,38 @@ void check_against_volume_integration(const core::SectionIntegrals& section, con
 }  // namespace
 
 TEST_CASE("ANCF force and Jacobian against finite differences", "[ancf][element]") {
-  SECTION("24 coordinates, circle") { check_against_finite_differences<2>(core::SectionIntegrals::circle(0.03)); }
-  SECTION("24 coordinates, L-angle") { check_against_finite_differences<2>(core::SectionIntegrals::polygon(l_angle())); }
-  SECTION("30 coordinates, circle") { check_against_finite_differences<3>(core::SectionIntegrals::circle(0.03)); }
-  SECTION("30 coordinates, L-angle") { check_against_finite_differences<3>(core::SectionIntegrals::polygon(l_angle())); }
+  for (const auto method : {core::AncfForceMethod::gerstmayr, core::AncfForceMethod::invariant}) {
+    INFO((method == core::AncfForceMethod::gerstmayr ? "method II" : "method I"));
+    check_against_finite_differences<2>(core::SectionIntegrals::circle(0.03), method);
+    check_against_finite_differences<2>(core::SectionIntegrals::polygon(l_angle()), method);
+    check_against_finite_differences<3>(core::SectionIntegrals::circle(0.03), method);
+    check_against_finite_differences<3>(core::SectionIntegrals::polygon(l_angle()), method);
+  }
+}
+
+template <int transverse>
+void check_methods_agree(const core::SectionIntegrals& section) {
+  OneElement<transverse> one(section, core::AncfForceMethod::gerstmayr);
+  OneElement<transverse> two(section, core::AncfForceMethod::invariant);
+  using Vector = typename core::AncfBeamElement<transverse>::Vector;
+  using Matrix = typename core::AncfBeamElement<transverse>::Matrix;
+  for (unsigned seed : {6u, 7u}) {
+    const Vector e = deformed(one, seed);
+    Vector Q1, Q2;
+    Matrix K1, K2;
+    const double U1 = one.element->elastic_force(e, Q1, &K1), U2 = two.element->elastic_force(e, Q2, &K2);
+    // Method I sums terms of size λ|e|⁴ that cancel down to the strain energy (E ≈ 0.1 here):
+    // its round-off is ≈ 1e-16 · λ|e|⁴ / (E² λ) ≈ 1e-14 relative; 1e-12 leaves margin.
+    CHECK(std::fabs(U1 - U2) <= 1e-12 * U1);
+    CHECK(relative_error(Q2, Q1) < 1e-12);
+    CHECK(relative_error(K2, K1) < 1e-12);
+  }
+}
+
+TEST_CASE("ANCF methods I (invariant) and II (Gerstmayr) agree to round-off", "[ancf][element]") {
+  check_methods_agree<2>(core::SectionIntegrals::polygon(l_angle()));
+  check_methods_agree<3>(core::SectionIntegrals::polygon(l_angle()));
+  check_methods_agree<2>(core::SectionIntegrals::circle(0.03).truncated_to_second_order());
 }
 
 TEST_CASE("ANCF section integrals reproduce a direct volume integration", "[ancf][element]") {

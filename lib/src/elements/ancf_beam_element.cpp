@@ -58,8 +58,8 @@ std::array<double, transverse> AncfShapeFunctions<transverse>::transverse_deriva
 
 template <int transverse>
 AncfElementTables<transverse>::AncfElementTables(double length_, const Material& material,
-                                                 const SectionIntegrals& section)
-    : length(length_), density(material.density) {
+                                                 const SectionIntegrals& section, AncfForceMethod method_)
+    : method(method_), length(length_), density(material.density) {
   material.validate();
   if (!(length > 0.0) || !std::isfinite(length))
     throw Error("the element length is " + std::to_string(length), "core::AncfElementTables",
@@ -115,6 +115,46 @@ AncfElementTables<transverse>::AncfElementTables(double length_, const Material&
       for (int q = 0; q < 3; ++q)
         scalar_mass += density * weight[g] * moment[p][q][0][0] * N.row(p).transpose() * N.row(q);
     }
+  }
+  if (method == AncfForceMethod::invariant) compute_invariants();
+}
+
+template <int transverse>
+void AncfElementTables<transverse>::compute_invariants() {
+  // C_αβ = eᵀ(H_αβ ⊗ I₃)e with H_αβ = Σ_{v∈α, w∈β} φ_v φ_w X_vw, X_vw = sym(B_v B_wᵀ), over the
+  // variables v = (a, b, c, g, h) of column α(v) and section function φ_p(v) (eq. A17).
+  // K₁ = −(3λ + 2μ)/2 ∫ Σ_α H_αα dV (001 eq. 31, whose minus sign the text lost),
+  // τ = ∫ [λ/2 Σ_αβ H_αα ⊗ H_ββ + μ Σ_αβ H_αβ ⊗ H_αβ] dV (eq. 32 on node vectors, eq. A18).
+  invariant_constant = (9 * lambda / 8 + 3 * mu / 4) * moment[0][0][0][0] * length;
+  invariant_linear.setZero();
+  invariant_quartic = Eigen::MatrixXd::Zero(n * n, n * n);
+  Eigen::Matrix<double, n * n, 1> X[5][5];
+  for (int g = 0; g < points; ++g) {
+    const Eigen::Matrix<double, 5, n>& B = coefficients[g];
+    for (int v = 0; v < 5; ++v)
+      for (int w = 0; w < 5; ++w) {
+        const Eigen::Matrix<double, n, n> x = 0.5 * (B.row(v).transpose() * B.row(w) + B.row(w).transpose() * B.row(v));
+        X[v][w] = Eigen::Map<const Eigen::Matrix<double, n * n, 1>>(x.data());
+      }
+    auto M = [&](int v, int w, int v2, int w2) {
+      return moment[variable_phi[v]][variable_phi[w]][variable_phi[v2]][variable_phi[w2]];
+    };
+    for (int v = 0; v < 5; ++v)
+      for (int w = 0; w < 5; ++w) {
+        if (variable_column[v] == variable_column[w])
+          invariant_linear -= (3 * lambda + 2 * mu) / 2 * weight[g] * moment[variable_phi[v]][variable_phi[w]][0][0] *
+                              Eigen::Map<const Eigen::Matrix<double, n, n>>(X[v][w].data());
+        for (int v2 = 0; v2 < 5; ++v2)
+          for (int w2 = 0; w2 < 5; ++w2) {
+            double c = 0.0;
+            // λ/2 (Σ_α H_αα) ⊗ (Σ_β H_ββ): both pairs within one column each.
+            if (variable_column[v] == variable_column[w] && variable_column[v2] == variable_column[w2]) c += lambda / 2;
+            // μ Σ_αβ H_αβ ⊗ H_αβ: the second pair in the same columns as the first.
+            if (variable_column[v] == variable_column[v2] && variable_column[w] == variable_column[w2]) c += mu;
+            if (c != 0.0 && M(v, w, v2, w2) != 0.0)
+              invariant_quartic.noalias() += c * weight[g] * M(v, w, v2, w2) * X[v][w] * X[v2][w2].transpose();
+          }
+      }
   }
 }
 
@@ -242,6 +282,38 @@ double AncfBeamElement<transverse>::strain_energy(const Vector& e) const {
 
 template <int transverse>
 double AncfBeamElement<transverse>::elastic_force(const Vector& e, Vector& Q, Matrix* K) const {
+  return tables_->method == AncfForceMethod::invariant ? invariant_force(e, Q, K) : gerstmayr_force(e, Q, K);
+}
+
+template <int transverse>
+double AncfBeamElement<transverse>::invariant_force(const Vector& e, Vector& Q, Matrix* K) const {
+  constexpr int n = Tables::n;
+  const Tables& t = *tables_;
+  const Eigen::Map<const Eigen::Matrix<double, 3, n>> nodes(e.data());
+  // Γ_ab = e_a · e_b; K₂(e) = κ₂ ⊗ I₃ with κ₂_ab = Σ_cd τ_abcd Γ_cd (001 eq. 32, eq. A19).
+  const Eigen::Matrix<double, n, n> gram = nodes.transpose() * nodes;
+  Eigen::Matrix<double, n, n> k2;
+  Eigen::Map<Eigen::Matrix<double, n * n, 1>>(k2.data()).noalias() =
+      t.invariant_quartic * Eigen::Map<const Eigen::Matrix<double, n * n, 1>>(gram.data());
+  const Eigen::Matrix<double, n, n> k = t.invariant_linear + k2;
+  // Q = (K₁ + K₂(e)) e (001 eq. 36 with eq. 23).
+  Eigen::Map<Eigen::Matrix<double, 3, n>>(Q.data()).noalias() = nodes * k;
+  if (K != nullptr) {
+    // J = K₁ + K₂(e) + 2 D(e), D_(a)(m) = Σ_bc τ_abcm e_b e_cᵀ (001 eq. 37, eq. A20).
+    for (int a = 0; a < n; ++a)
+      for (int m = 0; m < n; ++m) {
+        Eigen::Matrix<double, n, n> tam;  // tam(b, c) = τ_abcm
+        for (int c = 0; c < n; ++c) tam.col(c) = t.invariant_quartic.col(c + n * m).template segment<n>(n * a);
+        K->template block<3, 3>(3 * a, 3 * m) =
+            k(a, m) * Matrix3::Identity() + 2 * nodes * tam * nodes.transpose();
+      }
+  }
+  // U = U₀ + ½ Σ κ₁_ab Γ_ab + ¼ Σ κ₂_ab Γ_ab.
+  return t.invariant_constant + (0.5 * t.invariant_linear + 0.25 * k2).cwiseProduct(gram).sum();
+}
+
+template <int transverse>
+double AncfBeamElement<transverse>::gerstmayr_force(const Vector& e, Vector& Q, Matrix* K) const {
   const Tables& t = *tables_;
   double U = 0.0;
   Q.setZero();

@@ -5,6 +5,7 @@
 /// they share one set of constant tables), and dead forces on node positions.
 
 #include <spar/core/cross_section.hpp>
+#include <spar/core/elements/ancf_beam_element.hpp>
 #include <spar/core/model.hpp>
 #include <spar/core/section_integrals.hpp>
 
@@ -25,6 +26,7 @@ struct AncfBeamParameters {
   Eigen::Vector3d y_direction = Eigen::Vector3d::UnitY();
   int elements = 1;
   AncfElementKind kind = AncfElementKind::standard_24;
+  AncfForceMethod method = AncfForceMethod::gerstmayr;
   Material material;
   SectionIntegrals section;
 };
@@ -43,6 +45,10 @@ AncfBeam add_ancf_beam(Model& model, const AncfBeamParameters& parameters);
 
 /// The position r of an ANCF node (the first three coordinates of its block).
 Eigen::Vector3d ancf_node_position(const Configuration& q, int node);
+
+/// Points r(x, 0, 0) of the reference line, `samples` ≥ 2 equally spaced from start to end (one
+/// row each), from the Hermite interpolation of 001 eq. (5).
+Eigen::MatrixXd sample_ancf_centerline(const Configuration& q, const AncfBeam& beam, int samples);
 
 /// A dead force on an ANCF node's position (a VectorLoadElement with (f, 0, 0, 0)); returns the
 /// element index. Throws for a block that is not a vector block of 12.

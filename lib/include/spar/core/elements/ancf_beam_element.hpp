@@ -31,6 +31,17 @@
 
 namespace spar::core {
 
+/// How the elastic force and its Jacobian are computed; both give the same numbers to round-off.
+enum class AncfForceMethod {
+  /// Method I (García-Vallejo et al. 2004; 001 eqs. 31–37): U = U₀ + ½eᵀK₁e + ¼τ(e, e, e, e) with
+  /// the constant matrix K₁ and the invariant tensor τ precomputed per element geometry;
+  /// Q = (K₁ + K₂(e)) e, K₂(e)_ij = eᵀC_ij e (docs/ancf.md eqs. A17–A20).
+  invariant,
+  /// Method II (Gerstmayr & Shabana 2005, Liu, Tian & Hu 2010; 001 eqs. 38–51): section
+  /// resultants of the first Piola–Kirchhoff stress at each axial point (eqs. A13–A16).
+  gerstmayr,
+};
+
 /// Shape functions of the element with `transverse` functions per transverse gradient (2: the
 /// 24-coordinate element, 3: the 30-coordinate element). Coordinates are grouped in 3-vectors
 /// ("node vectors"), in the element's block order:
@@ -71,8 +82,10 @@ struct AncfElementTables {
   static constexpr int n = Shape::node_vectors;
   static constexpr int points = 5;  ///< axial Gauss points: exact for the degree-8 integrands
 
-  AncfElementTables(double length, const Material& material, const SectionIntegrals& section);
+  AncfElementTables(double length, const Material& material, const SectionIntegrals& section,
+                    AncfForceMethod method = AncfForceMethod::gerstmayr);
 
+  AncfForceMethod method;
   double length;
   double lambda;  ///< Lamé λ = Eν/((1 + ν)(1 − 2ν))
   double mu;      ///< Lamé μ = E/(2(1 + ν))
@@ -89,6 +102,15 @@ struct AncfElementTables {
   /// both with the density.
   Eigen::Matrix<double, n, n> scalar_mass;
   Eigen::Matrix<double, n, 1> gravity_weights;
+  /// Method I only (empty otherwise): U₀ = (9λ/8 + 3μ/4) A l, the scalar K₁ (K₁ = κ₁ ⊗ I₃) and
+  /// τ_abcd (n² × n², row a + n b, column c + n d), the invariant tensor on node vectors:
+  /// ¼ τ(e, e, e, e) = ¼ Σ τ_abcd (e_a · e_b)(e_c · e_d) (docs/ancf.md eqs. A17–A18).
+  double invariant_constant = 0.0;
+  Eigen::Matrix<double, n, n> invariant_linear;
+  Eigen::MatrixXd invariant_quartic;
+
+private:
+  void compute_invariants();
 };
 
 /// The section-integrated strain energy density W̄ = ∫ W dA of a SVK material at one axial point,
@@ -121,8 +143,8 @@ public:
   const Tables& tables() const { return *tables_; }
   /// U(e) = ∫ W̄ dx.
   double strain_energy(const Vector& e) const;
-  /// Q = ∂U/∂e (001 eq. 44) and, if K is not null, K = ∂Q/∂e (eq. 51); returns U.
-  /// Allocation-free.
+  /// Q = ∂U/∂e and, if K is not null, K = ∂Q/∂e, by the tables' method (method II: 001 eqs. 44
+  /// and 51; method I: eqs. 36–37); returns U. Allocation-free.
   double elastic_force(const Vector& e, Vector& Q, Matrix* K) const;
   /// The constant mass matrix ∫ ρ Sᵀ S dV.
   Matrix mass_matrix() const;
@@ -130,6 +152,9 @@ public:
   Vector coordinates(const Configuration& q) const;
 
 private:
+  double gerstmayr_force(const Vector& e, Vector& Q, Matrix* K) const;
+  double invariant_force(const Vector& e, Vector& Q, Matrix* K) const;
+
   std::vector<int> blocks_;
   std::shared_ptr<const Tables> tables_;
   int index_;
