@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <utility>
 
 namespace spar::core {
 
@@ -105,10 +106,6 @@ AncfElementTables<transverse>::AncfElementTables(double length_, const Material&
       N(1, Shape::y_vectors[k]) = tr[k];
       N(2, Shape::z_vectors[k]) = tr[k];
     }
-    gradient_operator[g].setZero();
-    for (int v = 0; v < 5; ++v)
-      for (int k = 0; k < n; ++k)
-        for (int d = 0; d < 3; ++d) gradient_operator[g](3 * v + d, 3 * k + d) = B(v, k);
     // m = ρ ∫ Σ_pq M_pq00 N_pᵀ N_q dx, w = ρ ∫ Σ_p M_p000 N_p dx (eq. A5).
     for (int p = 0; p < 3; ++p) {
       gravity_weights += density * weight[g] * moment[p][0][0][0] * N.row(p).transpose();
@@ -186,7 +183,8 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
     for (int q = p; q < 3; ++q) {
       Matrix3 s = Matrix3::Zero();
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) s += M[p][q][i][j] * S[i][j];
+        for (int j = 0; j < 3; ++j)
+          if (M[p][q][i][j] != 0.0) s += M[p][q][i][j] * S[i][j];  // odd moments of symmetric sections vanish
       Sbar[p][q] = Sbar[q][p] = s;
       W += (p == q ? 0.5 : 1.0) * E[p][q].cwiseProduct(s).sum();  // W̄ = ½ Σ_pq Ê_pq : S̄_pq
     }
@@ -199,21 +197,33 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
   }
   if (hessian == nullptr) return W;
   // ∂²W̄/∂u_v∂u_w = ∫ φ_p φ_q [S_αβ I + λ F_α F_βᵀ + μ(δ_αβ F Fᵀ + F_β F_αᵀ)] dA (eq. A15),
-  // with ∫ φ_p φ_q F_α F_βᵀ dA = T_pq(α, β) = Σ_ij M_pqij F_i e_α (F_j e_β)ᵀ.
+  // with ∫ φ_p φ_q F_α F_βᵀ dA = T_pq(α, β) = Σ_ij M_pqij F_i e_α (F_j e_β)ᵀ. F_i e_α vanishes for
+  // i > 0 < α (F₁, F₂ have one column), which leaves ≤ 25 terms per (p, q) for all nine (α, β).
+  Matrix3 T[3][3][3][3];  // [p][q][α][β], p ≤ q
+  for (int p = 0; p < 3; ++p)
+    for (int q = p; q < 3; ++q)
+      for (int alpha = 0; alpha < 3; ++alpha)
+        for (int beta = 0; beta < 3; ++beta) {
+          Matrix3& t = T[p][q][alpha][beta];
+          t.setZero();
+          for (int i = 0; i < (alpha == 0 ? 3 : 1); ++i)
+            for (int j = 0; j < (beta == 0 ? 3 : 1); ++j)
+              if (M[p][q][i][j] != 0.0) t.noalias() += M[p][q][i][j] * F[i].col(alpha) * F[j].col(beta).transpose();
+        }
   for (int v = 0; v < 5; ++v)
     for (int w = v; w < 5; ++w) {
-      const int p = variable_phi[v], alpha = variable_column[v];
-      const int q = variable_phi[w], beta = variable_column[w];
-      auto T = [&](int a, int b) {
-        Matrix3 t = Matrix3::Zero();
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j)
-            if (M[p][q][i][j] != 0.0) t.noalias() += M[p][q][i][j] * F[i].col(a) * F[j].col(b).transpose();
-        return t;
-      };
-      Matrix3 block = Sbar[p][q](alpha, beta) * Matrix3::Identity() + lambda * T(alpha, beta) +
-                      mu * T(beta, alpha);
-      if (alpha == beta) block += mu * (T(0, 0) + T(1, 1) + T(2, 2));
+      int p = variable_phi[v], alpha = variable_column[v];
+      int q = variable_phi[w], beta = variable_column[w];
+      // T_qp(β, α) = T_pq(α, β)ᵀ: order the pair so that p ≤ q, and transpose the block back.
+      const bool swapped = p > q;
+      if (swapped) {
+        std::swap(p, q);
+        std::swap(alpha, beta);
+      }
+      Matrix3 block = Sbar[p][q](alpha, beta) * Matrix3::Identity() + lambda * T[p][q][alpha][beta] +
+                      mu * T[p][q][beta][alpha];
+      if (alpha == beta) block += mu * (T[p][q][0][0] + T[p][q][1][1] + T[p][q][2][2]);
+      if (swapped) block.transposeInPlace();
       hessian->block<3, 3>(3 * v, 3 * w) = block;
       if (w != v) hessian->block<3, 3>(3 * w, 3 * v) = block.transpose();
     }
@@ -245,7 +255,9 @@ AncfBeamElement<transverse>::AncfBeamElement(std::vector<int> blocks, std::share
     throw Error("the nodes are " + std::to_string(l) + " apart, the tables' length is " +
                     std::to_string(tables_->length), where, "build the tables for this element's length");
   for (int g = 0; g < Tables::points; ++g) {
-    const Eigen::Matrix<double, 15, 1> u = tables_->gradient_operator[g] * e0;
+    Eigen::Matrix<double, 15, 1> u;
+    Eigen::Map<Eigen::Matrix<double, 3, 5>>(u.data()) =
+        Eigen::Map<const Eigen::Matrix<double, 3, Tables::n>>(e0.data()) * tables_->coefficients[g].transpose();
     Matrix3 F0;
     F0 << u.template segment<3>(0), u.template segment<3>(9), u.template segment<3>(12);
     const double distortion = (F0.transpose() * F0 - Matrix3::Identity()).norm() +
@@ -314,24 +326,42 @@ double AncfBeamElement<transverse>::invariant_force(const Vector& e, Vector& Q, 
 
 template <int transverse>
 double AncfBeamElement<transverse>::gerstmayr_force(const Vector& e, Vector& Q, Matrix* K) const {
+  constexpr int n = Tables::n;
   const Tables& t = *tables_;
+  const Eigen::Map<const Eigen::Matrix<double, 3, n>> nodes(e.data());
+  Eigen::Map<Eigen::Matrix<double, 3, n>> force(Q.data());
   double U = 0.0;
   Q.setZero();
   if (K != nullptr) K->setZero();
-  Eigen::Matrix<double, 15, 1> gradient;
+  Eigen::Matrix<double, 15, 1> u, gradient;
   Eigen::Matrix<double, 15, 15> hessian;
-  Eigen::Matrix<double, 15, dofs> HG;
+  Matrix3 HB[5][n];
   for (int g = 0; g < Tables::points; ++g) {
-    const Eigen::Matrix<double, 15, dofs>& G = t.gradient_operator[g];
-    U += t.weight[g] * ancf_section_energy(t.moment, t.lambda, t.mu, G * e, gradient,
-                                           K != nullptr ? &hessian : nullptr);
-    // Q = ∫ Gᵀ ∂W̄/∂u dx, K = ∫ Gᵀ ∂²W̄/∂u² G dx (eq. A16).
-    Q.noalias() += t.weight[g] * G.transpose() * gradient;
-    if (K != nullptr) {
-      HG.noalias() = hessian * G;
-      K->noalias() += t.weight[g] * G.transpose() * HG;
-    }
+    // u = (B ⊗ I₃) e: the columns a, b, c, g, h of nodes · Bᵀ (eq. A7).
+    const Eigen::Matrix<double, 5, n>& B = t.coefficients[g];
+    Eigen::Map<Eigen::Matrix<double, 3, 5>>(u.data()).noalias() = nodes * B.transpose();
+    U += t.weight[g] * ancf_section_energy(t.moment, t.lambda, t.mu, u, gradient, K != nullptr ? &hessian : nullptr);
+    // Q = ∫ (B ⊗ I₃)ᵀ ∂W̄/∂u dx (eq. A16).
+    force.noalias() += t.weight[g] * Eigen::Map<const Eigen::Matrix<double, 3, 5>>(gradient.data()) * B;
+    if (K == nullptr) continue;
+    // K = ∫ (B ⊗ I₃)ᵀ ∂²W̄/∂u² (B ⊗ I₃) dx block by block, skipping B's zeros (each variable
+    // touches 2 to 4 of the n node vectors).
+    for (int v = 0; v < 5; ++v)
+      for (int l = 0; l < n; ++l) {
+        HB[v][l].setZero();
+        for (int w = 0; w < 5; ++w)
+          if (B(w, l) != 0.0) HB[v][l].noalias() += B(w, l) * hessian.template block<3, 3>(3 * v, 3 * w);
+      }
+    for (int k = 0; k < n; ++k)
+      for (int v = 0; v < 5; ++v) {
+        if (B(v, k) == 0.0) continue;
+        const double c = t.weight[g] * B(v, k);
+        for (int l = k; l < n; ++l) K->template block<3, 3>(3 * k, 3 * l).noalias() += c * HB[v][l];
+      }
   }
+  if (K != nullptr)
+    for (int k = 0; k < n; ++k)
+      for (int l = k + 1; l < n; ++l) K->template block<3, 3>(3 * l, 3 * k) = K->template block<3, 3>(3 * k, 3 * l).transpose();
   return U;
 }
 

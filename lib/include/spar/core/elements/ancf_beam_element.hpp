@@ -93,11 +93,10 @@ struct AncfElementTables {
   /// M[p][q][i][j] = ∫ φ_p φ_q φ_i φ_j dA with φ = (1, y, z) (docs/ancf.md eq. A12).
   double moment[3][3][3][3];
   std::array<double, points> weight;  ///< Gauss weight × l
-  /// Per Gauss point: the coefficients of the node vectors in (a, b, c, g, h) = (r₀′, r_y′, r_z′,
-  /// r_y, r_z), i.e. F = [a + y b + z c, g, h] = Σ B e (docs/ancf.md eq. A7), and the same
-  /// expanded to 3-vectors (15 × dofs).
+  /// Per Gauss point: the coefficients B (5 × n) of the node vectors in u = (a, b, c, g, h) =
+  /// (r₀′, r_y′, r_z′, r_y, r_z), so that F = [a + y b + z c, g, h] and u = (B ⊗ I₃) e
+  /// (docs/ancf.md eq. A7).
   std::array<Eigen::Matrix<double, 5, n>, points> coefficients;
-  std::array<Eigen::Matrix<double, 15, Shape::dofs>, points> gradient_operator;
   /// Scalar mass matrix m (M = m ⊗ I₃, docs/ancf.md eq. A5) and gravity weights w (f_g = w ⊗ g),
   /// both with the density.
   Eigen::Matrix<double, n, n> scalar_mass;
