@@ -59,7 +59,8 @@ std::array<double, transverse> AncfShapeFunctions<transverse>::transverse_deriva
 
 template <int transverse>
 AncfElementTables<transverse>::AncfElementTables(double length_, const Material& material,
-                                                 const SectionIntegrals& section, AncfForceMethod method_)
+                                                 const SectionIntegrals& section, AncfForceMethod method_,
+                                                 AncfLockingRemedy remedy)
     : method(method_), length(length_), density(material.density) {
   material.validate();
   if (!(length > 0.0) || !std::isfinite(length))
@@ -68,6 +69,7 @@ AncfElementTables<transverse>::AncfElementTables(double length_, const Material&
   const double E = material.young_modulus, nu = material.poisson_ratio;
   lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
   mu = E / (2 * (1 + nu));
+  if (remedy == AncfLockingRemedy::uniaxial_bending) poisson_correction = (lambda + 2 * mu - E) / 2;
   // M[p][q][i][j] = ∫ φ_p φ_q φ_i φ_j dA, φ = (1, y, z): the moment of y^(#1) z^(#2) (eq. A12).
   for (int p = 0; p < 3; ++p)
     for (int q = 0; q < 3; ++q)
@@ -148,16 +150,67 @@ void AncfElementTables<transverse>::compute_invariants() {
             if (variable_column[v] == variable_column[w] && variable_column[v2] == variable_column[w2]) c += lambda / 2;
             // μ Σ_αβ H_αβ ⊗ H_αβ: the second pair in the same columns as the first.
             if (variable_column[v] == variable_column[v2] && variable_column[w] == variable_column[w2]) c += mu;
+            // The locking remedy's −c ∫ E_xx² dA on the variables a, b, c of column 1 (eq. A21).
+            if (v < 3 && w < 3 && v2 < 3 && w2 < 3) c -= poisson_correction;
             if (c != 0.0 && M(v, w, v2, w2) != 0.0)
               invariant_quartic.noalias() += c * weight[g] * M(v, w, v2, w2) * X[v][w] * X[v2][w2].transpose();
           }
       }
+    // ... and its + c (∫ E_xx dA)²/A: J = ∫ E_xx² − (∫ E_xx)²/A is purely quartic in e.
+    if (poisson_correction != 0.0) {
+      Eigen::Matrix<double, n * n, 1> mean = Eigen::Matrix<double, n * n, 1>::Zero();
+      for (int v = 0; v < 3; ++v)
+        for (int w = 0; w < 3; ++w) mean += moment[v][w][0][0] * X[v][w];
+      invariant_quartic.noalias() += poisson_correction * weight[g] / moment[0][0][0][0] * mean * mean.transpose();
+    }
   }
 }
 
 // Section kernel --------------------------------------------------------------------------------
 
-double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double mu,
+namespace {
+
+/// Subtracts c J, J = ∫ (E_xx − Ē_xx)² dA, from W̄ and its derivatives (eq. A21). With
+/// x = (a, b, c), E_xx = Σ_ij φ_i φ_j ε_ij, ε_ij = ½ x_i · x_j − ½ δ_i0 δ_j0:
+///   J = Σ_ij ε_ij σ_ij,  σ_ij = Σ_kl M_ijkl ε_kl − M_ij00 Ē_xx,  Ē_xx = Σ_ij M_ij00 ε_ij / A,
+///   ∂J/∂x_k = 2 Σ_j σ_kj x_j,  ∂²J/∂x_k∂x_l = 2 σ_kl I + 2 Σ_jq (M_kjlq − M_kj00 M_lq00/A) x_j x_qᵀ.
+double subtract_poisson_correction(const double (&M)[3][3][3][3], double c, const Eigen::Matrix<double, 15, 1>& u,
+                                   Eigen::Matrix<double, 15, 1>& gradient, Eigen::Matrix<double, 15, 15>* hessian) {
+  const double A = M[0][0][0][0];
+  Eigen::Vector3d x[3] = {u.segment<3>(0), u.segment<3>(3), u.segment<3>(6)};
+  double eps[3][3], sigma[3][3], mean = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      eps[i][j] = 0.5 * x[i].dot(x[j]) - (i == 0 && j == 0 ? 0.5 : 0.0);
+      mean += M[i][j][0][0] * eps[i][j] / A;
+    }
+  double J = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      sigma[i][j] = -M[i][j][0][0] * mean;
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) sigma[i][j] += M[i][j][k][l] * eps[k][l];
+      J += eps[i][j] * sigma[i][j];
+    }
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) gradient.segment<3>(3 * k) -= 2 * c * sigma[k][j] * x[j];
+  if (hessian != nullptr)
+    for (int k = 0; k < 3; ++k)
+      for (int l = 0; l < 3; ++l) {
+        Matrix3 h = 2 * sigma[k][l] * Matrix3::Identity();
+        for (int j = 0; j < 3; ++j)
+          for (int q = 0; q < 3; ++q) {
+            const double n = M[k][j][l][q] - M[k][j][0][0] * M[l][q][0][0] / A;
+            if (n != 0.0) h.noalias() += 2 * n * x[j] * x[q].transpose();
+          }
+        hessian->block<3, 3>(3 * k, 3 * l) -= c * h;
+      }
+  return c * J;
+}
+
+}  // namespace
+
+double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double mu, double poisson_correction,
                            const Eigen::Matrix<double, 15, 1>& u, Eigen::Matrix<double, 15, 1>& gradient,
                            Eigen::Matrix<double, 15, 15>* hessian) {
   // F(y, z) = Σ_p φ_p F_p (eq. A7).
@@ -195,7 +248,8 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
     for (int k = 0; k < 3; ++k) g += F[k] * Sbar[p][k].col(alpha);
     gradient.segment<3>(3 * v) = g;
   }
-  if (hessian == nullptr) return W;
+  if (hessian == nullptr)
+    return poisson_correction == 0.0 ? W : W - subtract_poisson_correction(M, poisson_correction, u, gradient, nullptr);
   // ∂²W̄/∂u_v∂u_w = ∫ φ_p φ_q [S_αβ I + λ F_α F_βᵀ + μ(δ_αβ F Fᵀ + F_β F_αᵀ)] dA (eq. A15),
   // with ∫ φ_p φ_q F_α F_βᵀ dA = T_pq(α, β) = Σ_ij M_pqij F_i e_α (F_j e_β)ᵀ. F_i e_α vanishes for
   // i > 0 < α (F₁, F₂ have one column), which leaves ≤ 25 terms per (p, q) for all nine (α, β).
@@ -227,6 +281,7 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
       hessian->block<3, 3>(3 * v, 3 * w) = block;
       if (w != v) hessian->block<3, 3>(3 * w, 3 * v) = block.transpose();
     }
+  if (poisson_correction != 0.0) W -= subtract_poisson_correction(M, poisson_correction, u, gradient, hessian);
   return W;
 }
 
@@ -340,7 +395,8 @@ double AncfBeamElement<transverse>::gerstmayr_force(const Vector& e, Vector& Q, 
     // u = (B ⊗ I₃) e: the columns a, b, c, g, h of nodes · Bᵀ (eq. A7).
     const Eigen::Matrix<double, 5, n>& B = t.coefficients[g];
     Eigen::Map<Eigen::Matrix<double, 3, 5>>(u.data()).noalias() = nodes * B.transpose();
-    U += t.weight[g] * ancf_section_energy(t.moment, t.lambda, t.mu, u, gradient, K != nullptr ? &hessian : nullptr);
+    U += t.weight[g] * ancf_section_energy(t.moment, t.lambda, t.mu, t.poisson_correction, u, gradient,
+                                           K != nullptr ? &hessian : nullptr);
     // Q = ∫ (B ⊗ I₃)ᵀ ∂W̄/∂u dx (eq. A16).
     force.noalias() += t.weight[g] * Eigen::Map<const Eigen::Matrix<double, 3, 5>>(gradient.data()) * B;
     if (K == nullptr) continue;

@@ -27,6 +27,7 @@ struct AncfBeamParameters {
   int elements = 1;
   AncfElementKind kind = AncfElementKind::standard_24;
   AncfForceMethod method = AncfForceMethod::gerstmayr;
+  AncfLockingRemedy remedy = AncfLockingRemedy::none;
   Material material;
   SectionIntegrals section;
 };

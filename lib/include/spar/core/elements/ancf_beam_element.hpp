@@ -42,6 +42,16 @@ enum class AncfForceMethod {
   gerstmayr,
 };
 
+/// A named remedy for Poisson locking (docs/ancf.md §6). `none` is the element of paper 001.
+enum class AncfLockingRemedy {
+  none,
+  /// The part of the axial strain that varies across the section (bending) is taken in uniaxial
+  /// stress: W̄ − c ∫ (E_xx − Ē_xx)² dA with c = (λ + 2μ − E)/2 and Ē_xx the section average, so
+  /// bending sees E instead of λ + 2μ while the section-averaged strain keeps the full 3D law
+  /// (docs/ancf.md eq. A21). Zero change at ν = 0.
+  uniaxial_bending,
+};
+
 /// Shape functions of the element with `transverse` functions per transverse gradient (2: the
 /// 24-coordinate element, 3: the 30-coordinate element). Coordinates are grouped in 3-vectors
 /// ("node vectors"), in the element's block order:
@@ -83,13 +93,16 @@ struct AncfElementTables {
   static constexpr int points = 5;  ///< axial Gauss points: exact for the degree-8 integrands
 
   AncfElementTables(double length, const Material& material, const SectionIntegrals& section,
-                    AncfForceMethod method = AncfForceMethod::gerstmayr);
+                    AncfForceMethod method = AncfForceMethod::gerstmayr,
+                    AncfLockingRemedy remedy = AncfLockingRemedy::none);
 
   AncfForceMethod method;
   double length;
   double lambda;  ///< Lamé λ = Eν/((1 + ν)(1 − 2ν))
   double mu;      ///< Lamé μ = E/(2(1 + ν))
   double density;
+  /// c = (λ + 2μ − E)/2 with the uniaxial_bending remedy, 0 without (eq. A21).
+  double poisson_correction = 0.0;
   /// M[p][q][i][j] = ∫ φ_p φ_q φ_i φ_j dA with φ = (1, y, z) (docs/ancf.md eq. A12).
   double moment[3][3][3][3];
   std::array<double, points> weight;  ///< Gauss weight × l
@@ -115,9 +128,10 @@ private:
 /// The section-integrated strain energy density W̄ = ∫ W dA of a SVK material at one axial point,
 /// its gradient with respect to u = (a, b, c, g, h) (the section resultants of P, docs/ancf.md
 /// eq. A14) and, if `hessian` is not null, its Hessian (eq. A15). Allocation-free.
+/// `poisson_correction` is c of eq. A21 (0: the plain St. Venant–Kirchhoff energy).
 double ancf_section_energy(const double (&moment)[3][3][3][3], double lambda, double mu,
-                           const Eigen::Matrix<double, 15, 1>& u, Eigen::Matrix<double, 15, 1>& gradient,
-                           Eigen::Matrix<double, 15, 15>* hessian);
+                           double poisson_correction, const Eigen::Matrix<double, 15, 1>& u,
+                           Eigen::Matrix<double, 15, 1>& gradient, Eigen::Matrix<double, 15, 15>* hessian);
 
 template <int transverse>
 class AncfBeamElement final : public Element {
