@@ -120,11 +120,12 @@ int main(int argc, char** argv) try {
   h5.write("centerline", centerline);
 
   // 7. Report.
-  std::printf("%s-coordinate element%s, remedy %s, %d elements, nu = %.3g, %s section: tip deflection %.6f mm, "
-              "Euler-Bernoulli %.6f mm (ratio %.4f); paper: I 4.1331, II 4.1328, III 5.7921 mm; "
-              "%d Newton iterations, %.3f s\n",
-              element.c_str(), element == "gebt" ? "" : (" (" + force + ")").c_str(), remedy.c_str(), elements, poisson,
-              section_kind.c_str(), 1e3 * deflection, 1e3 * theory, deflection / theory, report.newton_iterations, wall);
+  const std::string label = element == "gebt" ? "geometrically exact beam"
+                                               : element + "-coordinate ANCF element (" + force + ", remedy " + remedy + ")";
+  std::printf("%s, %d elements, nu = %.3g, %s section: tip deflection %.6f mm, Euler-Bernoulli %.6f mm (ratio %.4f); "
+              "paper: I 4.1331, II 4.1328, III 5.7921 mm; %d Newton iterations, %.3f s\n",
+              label.c_str(), elements, poisson, section_kind.c_str(), 1e3 * deflection, 1e3 * theory, deflection / theory,
+              report.newton_iterations, wall);
   examples::JsonSummary()
       .add("element", element).add("force", force).add("elements", elements).add("poisson", poisson)
       .add("section", section_kind).add("remedy", remedy).add("tip_deflection", deflection).add("euler_bernoulli", theory)

@@ -40,6 +40,18 @@ void SectionIntegrals::validate(const char* where) const {
                 "give positive dimensions (polygon vertices counter-clockwise)");
 }
 
+SectionIntegrals SectionIntegrals::from_moments(const Moments& m) {
+  for (int a = 0; a <= max_order; ++a)
+    for (int b = max_order + 1 - a; b <= max_order; ++b)
+      if (m[a][b] != 0.0)
+        throw Error("moment (" + std::to_string(a) + ", " + std::to_string(b) + ") is beyond order 4",
+                    "core::SectionIntegrals::from_moments", "give only the moments with a + b <= 4");
+  SectionIntegrals s;
+  s.moments_ = m;
+  s.validate("core::SectionIntegrals::from_moments");
+  return s;
+}
+
 SectionIntegrals SectionIntegrals::second_order(double area, double second_moment_y,
                                                 double second_moment_z, double product_moment) {
   SectionIntegrals s;

@@ -86,6 +86,15 @@ TEST_CASE("the paper's second-order section and input errors", "[ancf][section]"
   CHECK(s.moment(4, 0) == 0.0);
   CHECK(s.moment(1, 0) == 0.0);
   CHECK_THROWS_AS(s.moment(3, 2), Error);
+  // A section given by all fifteen integrals.
+  core::SectionIntegrals::Moments m{};
+  const auto circle = core::SectionIntegrals::circle(0.02, {0.01, 0.0});
+  for (int a = 0; a <= 4; ++a)
+    for (int b = 0; a + b <= 4; ++b) m[a][b] = circle.moment(a, b);
+  const auto given = core::SectionIntegrals::from_moments(m);
+  CHECK(given.moment(3, 0) == circle.moment(3, 0));
+  m[2][3] = 1.0;
+  CHECK_THROWS_AS(core::SectionIntegrals::from_moments(m), Error);
   CHECK_THROWS_AS(core::SectionIntegrals::circle(-1.0), Error);
   CHECK_THROWS_AS(core::SectionIntegrals::second_order(1.0, 1.0, 1.0, 2.0), Error);
   // Clockwise vertices give a negative area.

@@ -30,6 +30,12 @@ public:
   double second_moment_z() const { return moments_[2][0]; }
   double product_moment() const { return moments_[1][1]; }
 
+  using Moments = std::array<std::array<double, max_order + 1>, max_order + 1>;
+
+  /// A section given by its integrals: m[a][b] = ∫ y^a z^b dA for a + b ≤ 4 (entries with
+  /// a + b > 4 must be zero). Throws spar::Error for a non-positive area, a non-finite entry or a
+  /// non-zero entry beyond order 4.
+  static SectionIntegrals from_moments(const Moments& m);
   /// The paper's simplification (001 eq. 47): only A, I_y, I_z and I_yz, every odd and every
   /// fourth-order integral set to zero ("small symmetric section").
   static SectionIntegrals second_order(double area, double second_moment_y, double second_moment_z,
@@ -52,7 +58,7 @@ private:
   /// Throws spar::Error for a non-positive area or a non-finite moment.
   void validate(const char* where) const;
 
-  std::array<std::array<double, max_order + 1>, max_order + 1> moments_{};
+  Moments moments_{};
 };
 
 }  // namespace spar::core

@@ -11,12 +11,14 @@
 /// must be straight and undistorted (r_x, r_y, r_z orthonormal), so F = ∂r/∂(x, y, z) is the
 /// deformation gradient and E = ½(FᵀF − I) the Green–Lagrange strain.
 ///
-/// Material: St. Venant–Kirchhoff, S = λ tr(E) I + 2μ E. The elastic force and its Jacobian use
-/// the first Piola–Kirchhoff stress P = F S (Gerstmayr & Shabana 2005, 001 eqs. 38–51) integrated
-/// over the section in closed form through the section's moments of order ≤ 4
-/// (core/section_integrals.hpp; docs/ancf.md eqs. A11–A16), along the axis by five-point Gauss
-/// (exact: the integrands are polynomials of degree ≤ 8 in x). Mass matrix and gravity are
-/// constant (001 eq. 8).
+/// Material: St. Venant–Kirchhoff, S = λ tr(E) I + 2μ E, optionally with a Poisson locking remedy
+/// (AncfLockingRemedy). The elastic force and its Jacobian come from method II (default: section
+/// resultants of the first Piola–Kirchhoff stress P = F S, Gerstmayr & Shabana 2005, 001 eqs.
+/// 38–51; docs/ancf.md eqs. A12–A16) or method I (invariant tensors, García-Vallejo et al. 2004,
+/// 001 eqs. 31–37; eqs. A17–A20). Both integrate the section in closed form through its moments
+/// of order ≤ 4 (core/section_integrals.hpp) and the axis by five-point Gauss (exact: the
+/// integrands are polynomials of degree ≤ 8 in x), so they agree to round-off. Mass matrix and
+/// gravity are constant (001 eq. 8).
 
 #include <spar/core/cross_section.hpp>
 #include <spar/core/element.hpp>
