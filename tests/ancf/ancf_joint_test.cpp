@@ -1,6 +1,7 @@
 // Spherical joints on ANCF beams: the point inside an element against the literal shape functions
 // of 001 eqs. (5)/(55), and B against finite differences of Φ.
 #include <spar/core/ancf_beam.hpp>
+#include <spar/core/elements/vector_load_element.hpp>
 #include <spar/error.hpp>
 #include <spar/joints/ancf_spherical_joint.hpp>
 
@@ -95,4 +96,27 @@ TEST_CASE("ANCF spherical joint: B against finite differences, zero tangent and 
   CHECK_THROWS_AS(joints::ancf_element_point(beam, 3, 0.5), Error);
   CHECK_THROWS_AS(joints::ancf_element_point(beam, 0, 1.5), Error);
   CHECK_THROWS_AS(joints::ancf_node_point(model.state(), 99), Error);
+}
+
+TEST_CASE("a dead force on an ANCF node: residual, power, input errors", "[ancf][loads]") {
+  core::AncfBeam beam;
+  core::Model model = deformed_beam(core::AncfElementKind::standard_24, beam);
+  const int index = core::add_ancf_nodal_force(model, beam.nodes[1], Eigen::Vector3d(1, -2, 3), [](double t) { return 2 * t; });
+  const core::Element& load = model.element(index);
+  const core::ElementRequest request;
+  core::ElementOutput out;
+  out.reset(12, request);
+  load.evaluate({.q = &model.state(), .load_factor = 0.5}, request, out);
+  // Statics: −λ f on the position, nothing on the gradients.
+  CHECK(out.residual.head<3>() == Eigen::Vector3d(-0.5, 1.0, -1.5));
+  CHECK(out.residual.tail<9>().isZero(0.0));
+  // Dynamics: history(t) = 2t scales it; the power is f · ṙ.
+  const Eigen::VectorXd v = Eigen::VectorXd::Ones(model.dof_count());
+  const Eigen::VectorXd a = Eigen::VectorXd::Zero(model.dof_count());
+  out.reset(12, request);
+  load.evaluate({.q = &model.state(), .velocity = &v, .acceleration = &a, .time = 0.25}, request, out);
+  CHECK(out.energy.external_power == Approx(0.5 * (1 - 2 + 3)).epsilon(1e-15));
+  CHECK_THROWS_AS(core::VectorLoadElement(model.state(), beam.nodes[0], Eigen::VectorXd::Ones(3), {}, 0), Error);
+  const int frame = model.add_frame(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+  CHECK_THROWS_AS(core::VectorLoadElement(model.state(), frame, Eigen::VectorXd::Ones(6), {}, 0), Error);
 }
