@@ -1,0 +1,479 @@
+#include <spar/core/elements/ancf_beam_element.hpp>
+
+#include <spar/error.hpp>
+#include <spar/iga/quadrature.hpp>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <utility>
+
+namespace spar::core {
+
+namespace {
+
+using Matrix3 = Eigen::Matrix3d;
+
+/// The variables u = (a, b, c, g, h) of docs/ancf.md eq. A7 as (φ index p, column α of F):
+/// F = Σ_p φ_p F_p with φ = (1, y, z), F₀ = [a g h], F₁ = [b 0 0], F₂ = [c 0 0].
+constexpr int variable_phi[5] = {0, 1, 2, 0, 0};
+constexpr int variable_column[5] = {0, 0, 0, 1, 2};
+
+}  // namespace
+
+// Shape functions -------------------------------------------------------------------------------
+
+template <int transverse>
+std::array<double, 4> AncfShapeFunctions<transverse>::axial(double xi, double l) {
+  // 001 eq. (5): S1, S2, S5, S6.
+  const double x2 = xi * xi, x3 = x2 * xi;
+  return {1 - 3 * x2 + 2 * x3, l * (xi - 2 * x2 + x3), 3 * x2 - 2 * x3, l * (x3 - x2)};
+}
+
+template <int transverse>
+std::array<double, 4> AncfShapeFunctions<transverse>::axial_derivative(double xi, double l) {
+  const double x2 = xi * xi;
+  return {6 * (x2 - xi) / l, 1 - 4 * xi + 3 * x2, 6 * (xi - x2) / l, 3 * x2 - 2 * xi};
+}
+
+template <int transverse>
+std::array<double, transverse> AncfShapeFunctions<transverse>::transverse_values(double xi, double l) {
+  if constexpr (transverse == 2) {
+    (void)l;
+    return {1 - xi, xi};  // 001 eq. (5)
+  } else {
+    return {1 - xi * xi, xi * xi, l * (xi - xi * xi)};  // 001 eq. (55)
+  }
+}
+
+template <int transverse>
+std::array<double, transverse> AncfShapeFunctions<transverse>::transverse_derivative(double xi, double l) {
+  if constexpr (transverse == 2) {
+    return {-1 / l, 1 / l};
+  } else {
+    return {-2 * xi / l, 2 * xi / l, 1 - 2 * xi};
+  }
+}
+
+// Tables ----------------------------------------------------------------------------------------
+
+template <int transverse>
+AncfElementTables<transverse>::AncfElementTables(double length_, const Material& material,
+                                                 const SectionIntegrals& section, AncfForceMethod method_,
+                                                 AncfLockingRemedy remedy)
+    : method(method_), length(length_), density(material.density) {
+  material.validate();
+  if (!(length > 0.0) || !std::isfinite(length))
+    throw Error("the element length is " + std::to_string(length), "core::AncfElementTables",
+                "give distinct end nodes");
+  const double E = material.young_modulus, nu = material.poisson_ratio;
+  lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  mu = E / (2 * (1 + nu));
+  if (remedy == AncfLockingRemedy::uniaxial_bending) poisson_correction = (lambda + 2 * mu - E) / 2;
+  // M[p][q][i][j] = ∫ φ_p φ_q φ_i φ_j dA, φ = (1, y, z): the moment of y^(#1) z^(#2) (eq. A12).
+  for (int p = 0; p < 3; ++p)
+    for (int q = 0; q < 3; ++q)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const int idx[4] = {p, q, i, j};
+          int ay = 0, az = 0;
+          for (int k : idx) {
+            ay += (k == 1);
+            az += (k == 2);
+          }
+          moment[p][q][i][j] = section.moment(ay, az);
+        }
+
+  const iga::GaussRule rule = iga::gauss_legendre(points);
+  scalar_mass.setZero();
+  gravity_weights.setZero();
+  for (int g = 0; g < points; ++g) {
+    const double xi = 0.5 * (rule.points[g] + 1);
+    weight[g] = 0.5 * rule.weights[g] * length;
+    const auto ax = Shape::axial(xi, length), dax = Shape::axial_derivative(xi, length);
+    const auto tr = Shape::transverse_values(xi, length), dtr = Shape::transverse_derivative(xi, length);
+    Eigen::Matrix<double, 5, n>& B = coefficients[g];
+    B.setZero();
+    // Position r = Σ_p φ_p r_p(x): r₀ (Hermite), r_y, r_z (transverse functions).
+    Eigen::Matrix<double, 3, n> N = Eigen::Matrix<double, 3, n>::Zero();
+    for (int k = 0; k < 4; ++k) {
+      B(0, Shape::axial_vectors[k]) = dax[k];
+      N(0, Shape::axial_vectors[k]) = ax[k];
+    }
+    for (int k = 0; k < transverse; ++k) {
+      B(1, Shape::y_vectors[k]) = dtr[k];
+      B(2, Shape::z_vectors[k]) = dtr[k];
+      B(3, Shape::y_vectors[k]) = tr[k];
+      B(4, Shape::z_vectors[k]) = tr[k];
+      N(1, Shape::y_vectors[k]) = tr[k];
+      N(2, Shape::z_vectors[k]) = tr[k];
+    }
+    // m = ρ ∫ Σ_pq M_pq00 N_pᵀ N_q dx, w = ρ ∫ Σ_p M_p000 N_p dx (eq. A5).
+    for (int p = 0; p < 3; ++p) {
+      gravity_weights += density * weight[g] * moment[p][0][0][0] * N.row(p).transpose();
+      for (int q = 0; q < 3; ++q)
+        scalar_mass += density * weight[g] * moment[p][q][0][0] * N.row(p).transpose() * N.row(q);
+    }
+  }
+  if (method == AncfForceMethod::invariant) compute_invariants();
+}
+
+template <int transverse>
+void AncfElementTables<transverse>::compute_invariants() {
+  // C_αβ = eᵀ(H_αβ ⊗ I₃)e with H_αβ = Σ_{v∈α, w∈β} φ_v φ_w X_vw, X_vw = sym(B_v B_wᵀ), over the
+  // variables v = (a, b, c, g, h) of column α(v) and section function φ_p(v) (eq. A17).
+  // K₁ = −(3λ + 2μ)/2 ∫ Σ_α H_αα dV (001 eq. 31, whose minus sign the text lost),
+  // τ = ∫ [λ/2 Σ_αβ H_αα ⊗ H_ββ + μ Σ_αβ H_αβ ⊗ H_αβ] dV (eq. 32 on node vectors, eq. A18).
+  invariant_constant = (9 * lambda / 8 + 3 * mu / 4) * moment[0][0][0][0] * length;
+  invariant_linear.setZero();
+  invariant_quartic = Eigen::MatrixXd::Zero(n * n, n * n);
+  Eigen::Matrix<double, n * n, 1> X[5][5];
+  for (int g = 0; g < points; ++g) {
+    const Eigen::Matrix<double, 5, n>& B = coefficients[g];
+    for (int v = 0; v < 5; ++v)
+      for (int w = 0; w < 5; ++w) {
+        const Eigen::Matrix<double, n, n> x = 0.5 * (B.row(v).transpose() * B.row(w) + B.row(w).transpose() * B.row(v));
+        X[v][w] = Eigen::Map<const Eigen::Matrix<double, n * n, 1>>(x.data());
+      }
+    auto M = [&](int v, int w, int v2, int w2) {
+      return moment[variable_phi[v]][variable_phi[w]][variable_phi[v2]][variable_phi[w2]];
+    };
+    for (int v = 0; v < 5; ++v)
+      for (int w = 0; w < 5; ++w) {
+        if (variable_column[v] == variable_column[w])
+          invariant_linear -= (3 * lambda + 2 * mu) / 2 * weight[g] * moment[variable_phi[v]][variable_phi[w]][0][0] *
+                              Eigen::Map<const Eigen::Matrix<double, n, n>>(X[v][w].data());
+        for (int v2 = 0; v2 < 5; ++v2)
+          for (int w2 = 0; w2 < 5; ++w2) {
+            double c = 0.0;
+            // λ/2 (Σ_α H_αα) ⊗ (Σ_β H_ββ): both pairs within one column each.
+            if (variable_column[v] == variable_column[w] && variable_column[v2] == variable_column[w2]) c += lambda / 2;
+            // μ Σ_αβ H_αβ ⊗ H_αβ: the second pair in the same columns as the first.
+            if (variable_column[v] == variable_column[v2] && variable_column[w] == variable_column[w2]) c += mu;
+            // The locking remedy's −c ∫ E_xx² dA on the variables a, b, c of column 1 (eq. A21).
+            if (v < 3 && w < 3 && v2 < 3 && w2 < 3) c -= poisson_correction;
+            if (c != 0.0 && M(v, w, v2, w2) != 0.0)
+              invariant_quartic.noalias() += c * weight[g] * M(v, w, v2, w2) * X[v][w] * X[v2][w2].transpose();
+          }
+      }
+    // ... and its + c (∫ E_xx dA)²/A: J = ∫ E_xx² − (∫ E_xx)²/A is purely quartic in e.
+    if (poisson_correction != 0.0) {
+      Eigen::Matrix<double, n * n, 1> mean = Eigen::Matrix<double, n * n, 1>::Zero();
+      for (int v = 0; v < 3; ++v)
+        for (int w = 0; w < 3; ++w) mean += moment[v][w][0][0] * X[v][w];
+      invariant_quartic.noalias() += poisson_correction * weight[g] / moment[0][0][0][0] * mean * mean.transpose();
+    }
+  }
+}
+
+// Section kernel --------------------------------------------------------------------------------
+
+namespace {
+
+/// Subtracts c J, J = ∫ (E_xx − Ē_xx)² dA, from W̄ and its derivatives (eq. A21). With
+/// x = (a, b, c), E_xx = Σ_ij φ_i φ_j ε_ij, ε_ij = ½ x_i · x_j − ½ δ_i0 δ_j0:
+///   J = Σ_ij ε_ij σ_ij,  σ_ij = Σ_kl M_ijkl ε_kl − M_ij00 Ē_xx,  Ē_xx = Σ_ij M_ij00 ε_ij / A,
+///   ∂J/∂x_k = 2 Σ_j σ_kj x_j,  ∂²J/∂x_k∂x_l = 2 σ_kl I + 2 Σ_jq (M_kjlq − M_kj00 M_lq00/A) x_j x_qᵀ.
+double subtract_poisson_correction(const double (&M)[3][3][3][3], double c, const Eigen::Matrix<double, 15, 1>& u,
+                                   Eigen::Matrix<double, 15, 1>& gradient, Eigen::Matrix<double, 15, 15>* hessian) {
+  const double A = M[0][0][0][0];
+  Eigen::Vector3d x[3] = {u.segment<3>(0), u.segment<3>(3), u.segment<3>(6)};
+  double eps[3][3], sigma[3][3], mean = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      eps[i][j] = 0.5 * x[i].dot(x[j]) - (i == 0 && j == 0 ? 0.5 : 0.0);
+      mean += M[i][j][0][0] * eps[i][j] / A;
+    }
+  double J = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      sigma[i][j] = -M[i][j][0][0] * mean;
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) sigma[i][j] += M[i][j][k][l] * eps[k][l];
+      J += eps[i][j] * sigma[i][j];
+    }
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) gradient.segment<3>(3 * k) -= 2 * c * sigma[k][j] * x[j];
+  if (hessian != nullptr)
+    for (int k = 0; k < 3; ++k)
+      for (int l = 0; l < 3; ++l) {
+        Matrix3 h = 2 * sigma[k][l] * Matrix3::Identity();
+        for (int j = 0; j < 3; ++j)
+          for (int q = 0; q < 3; ++q) {
+            const double n = M[k][j][l][q] - M[k][j][0][0] * M[l][q][0][0] / A;
+            if (n != 0.0) h.noalias() += 2 * n * x[j] * x[q].transpose();
+          }
+        hessian->block<3, 3>(3 * k, 3 * l) -= c * h;
+      }
+  return c * J;
+}
+
+}  // namespace
+
+double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double mu, double poisson_correction,
+                           const Eigen::Matrix<double, 15, 1>& u, Eigen::Matrix<double, 15, 1>& gradient,
+                           Eigen::Matrix<double, 15, 15>* hessian) {
+  // F(y, z) = Σ_p φ_p F_p (eq. A7).
+  Matrix3 F[3];
+  F[0] << u.segment<3>(0), u.segment<3>(9), u.segment<3>(12);
+  F[1].setZero();
+  F[1].col(0) = u.segment<3>(3);
+  F[2].setZero();
+  F[2].col(0) = u.segment<3>(6);
+  // E = Σ_ij φ_i φ_j Ê_ij with Ê_ij = ¼(F_iᵀF_j + F_jᵀF_i) − ½ I δ_i0 δ_j0; Ŝ_ij = λ tr Ê_ij I + 2μ Ê_ij
+  // (eq. A13).
+  Matrix3 E[3][3], S[3][3], Sbar[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      Matrix3 Eij = 0.25 * (F[i].transpose() * F[j] + F[j].transpose() * F[i]);
+      if (i == 0 && j == 0) Eij.diagonal().array() -= 0.5;
+      E[i][j] = E[j][i] = Eij;
+      S[i][j] = S[j][i] = lambda * Eij.trace() * Matrix3::Identity() + 2 * mu * Eij;
+    }
+  // S̄_pq = ∫ φ_p φ_q S dA = Σ_ij M_pqij Ŝ_ij.
+  double W = 0.0;
+  for (int p = 0; p < 3; ++p)
+    for (int q = p; q < 3; ++q) {
+      Matrix3 s = Matrix3::Zero();
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          if (M[p][q][i][j] != 0.0) s += M[p][q][i][j] * S[i][j];  // odd moments of symmetric sections vanish
+      Sbar[p][q] = Sbar[q][p] = s;
+      W += (p == q ? 0.5 : 1.0) * E[p][q].cwiseProduct(s).sum();  // W̄ = ½ Σ_pq Ê_pq : S̄_pq
+    }
+  // ∂W̄/∂u_v = ∫ φ_p P e_α dA = Σ_k F_k S̄_pk e_α (P = F S; eq. A14).
+  for (int v = 0; v < 5; ++v) {
+    const int p = variable_phi[v], alpha = variable_column[v];
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) g += F[k] * Sbar[p][k].col(alpha);
+    gradient.segment<3>(3 * v) = g;
+  }
+  if (hessian == nullptr)
+    return poisson_correction == 0.0 ? W : W - subtract_poisson_correction(M, poisson_correction, u, gradient, nullptr);
+  // ∂²W̄/∂u_v∂u_w = ∫ φ_p φ_q [S_αβ I + λ F_α F_βᵀ + μ(δ_αβ F Fᵀ + F_β F_αᵀ)] dA (eq. A15),
+  // with ∫ φ_p φ_q F_α F_βᵀ dA = T_pq(α, β) = Σ_ij M_pqij F_i e_α (F_j e_β)ᵀ. F_i e_α vanishes for
+  // i > 0 < α (F₁, F₂ have one column), which leaves ≤ 25 terms per (p, q) for all nine (α, β).
+  Matrix3 T[3][3][3][3];  // [p][q][α][β], p ≤ q
+  for (int p = 0; p < 3; ++p)
+    for (int q = p; q < 3; ++q)
+      for (int alpha = 0; alpha < 3; ++alpha)
+        for (int beta = 0; beta < 3; ++beta) {
+          Matrix3& t = T[p][q][alpha][beta];
+          t.setZero();
+          for (int i = 0; i < (alpha == 0 ? 3 : 1); ++i)
+            for (int j = 0; j < (beta == 0 ? 3 : 1); ++j)
+              if (M[p][q][i][j] != 0.0) t.noalias() += M[p][q][i][j] * F[i].col(alpha) * F[j].col(beta).transpose();
+        }
+  for (int v = 0; v < 5; ++v)
+    for (int w = v; w < 5; ++w) {
+      int p = variable_phi[v], alpha = variable_column[v];
+      int q = variable_phi[w], beta = variable_column[w];
+      // T_qp(β, α) = T_pq(α, β)ᵀ: order the pair so that p ≤ q, and transpose the block back.
+      const bool swapped = p > q;
+      if (swapped) {
+        std::swap(p, q);
+        std::swap(alpha, beta);
+      }
+      Matrix3 block = Sbar[p][q](alpha, beta) * Matrix3::Identity() + lambda * T[p][q][alpha][beta] +
+                      mu * T[p][q][beta][alpha];
+      if (alpha == beta) block += mu * (T[p][q][0][0] + T[p][q][1][1] + T[p][q][2][2]);
+      if (swapped) block.transposeInPlace();
+      hessian->block<3, 3>(3 * v, 3 * w) = block;
+      if (w != v) hessian->block<3, 3>(3 * w, 3 * v) = block.transpose();
+    }
+  if (poisson_correction != 0.0) W -= subtract_poisson_correction(M, poisson_correction, u, gradient, hessian);
+  return W;
+}
+
+// Element ---------------------------------------------------------------------------------------
+
+template <int transverse>
+AncfBeamElement<transverse>::AncfBeamElement(std::vector<int> blocks, std::shared_ptr<const Tables> tables,
+                                             const Configuration& q0, int index)
+    : blocks_(std::move(blocks)), tables_(std::move(tables)), index_(index) {
+  const std::string where = "core::AncfBeamElement (" + name() + ")";
+  const std::size_t expected = transverse == 2 ? 2 : 3;
+  if (blocks_.size() != expected)
+    throw Error("expected " + std::to_string(expected) + " blocks, got " + std::to_string(blocks_.size()),
+                where, "give the two nodes (and, for the 30-coordinate element, its own block of 6)");
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    const int want = b < 2 ? 12 : 6;
+    if (blocks_[b] < 0 || blocks_[b] >= q0.block_count() || q0.is_frame(blocks_[b]) ||
+        q0.blocks[blocks_[b]].size != want)
+      throw Error("block " + std::to_string(blocks_[b]) + " is not a vector block of " + std::to_string(want),
+                  where, "nodes are vector blocks (r, r_x, r_y, r_z); the extra block has 6 entries");
+  }
+  // The reference configuration must be strain free: F₀ = [a g h] orthogonal, b = c = 0.
+  const Vector e0 = coordinates(q0);
+  const double l = (e0.template segment<3>(12) - e0.template head<3>()).norm();
+  if (std::fabs(l - tables_->length) > 1e-12 * tables_->length)
+    throw Error("the nodes are " + std::to_string(l) + " apart, the tables' length is " +
+                    std::to_string(tables_->length), where, "build the tables for this element's length");
+  for (int g = 0; g < Tables::points; ++g) {
+    Eigen::Matrix<double, 15, 1> u;
+    Eigen::Map<Eigen::Matrix<double, 3, 5>>(u.data()) =
+        Eigen::Map<const Eigen::Matrix<double, 3, Tables::n>>(e0.data()) * tables_->coefficients[g].transpose();
+    Matrix3 F0;
+    F0 << u.template segment<3>(0), u.template segment<3>(9), u.template segment<3>(12);
+    const double distortion = (F0.transpose() * F0 - Matrix3::Identity()).norm() +
+                              l * (u.template segment<6>(3).norm());
+    if (!(distortion < 1e-9))
+      throw Error("the reference configuration is not straight and undistorted (|F0ᵀF0 − I| + l|∇r_y,z| = " +
+                      std::to_string(distortion) + ")",
+                  where, "place the nodes on a line with orthonormal r_x, r_y, r_z (core/ancf_beam.hpp)");
+  }
+}
+
+template <int transverse>
+std::string AncfBeamElement<transverse>::name() const {
+  return "ANCF beam element " + std::to_string(index_) + " (" + std::to_string(dofs) + " coordinates)";
+}
+
+template <int transverse>
+typename AncfBeamElement<transverse>::Vector AncfBeamElement<transverse>::coordinates(const Configuration& q) const {
+  Vector e;
+  int k = 0;
+  for (int b : blocks_) {
+    const int size = q.blocks[b].size;
+    e.segment(k, size) = q.values.segment(q.blocks[b].offset, size);
+    k += size;
+  }
+  return e;
+}
+
+template <int transverse>
+double AncfBeamElement<transverse>::strain_energy(const Vector& e) const {
+  Vector Q;
+  return elastic_force(e, Q, nullptr);
+}
+
+template <int transverse>
+double AncfBeamElement<transverse>::elastic_force(const Vector& e, Vector& Q, Matrix* K) const {
+  return tables_->method == AncfForceMethod::invariant ? invariant_force(e, Q, K) : gerstmayr_force(e, Q, K);
+}
+
+template <int transverse>
+double AncfBeamElement<transverse>::invariant_force(const Vector& e, Vector& Q, Matrix* K) const {
+  constexpr int n = Tables::n;
+  const Tables& t = *tables_;
+  const Eigen::Map<const Eigen::Matrix<double, 3, n>> nodes(e.data());
+  // Γ_ab = e_a · e_b; K₂(e) = κ₂ ⊗ I₃ with κ₂_ab = Σ_cd τ_abcd Γ_cd (001 eq. 32, eq. A19).
+  const Eigen::Matrix<double, n, n> gram = nodes.transpose() * nodes;
+  Eigen::Matrix<double, n, n> k2;
+  Eigen::Map<Eigen::Matrix<double, n * n, 1>>(k2.data()).noalias() =
+      t.invariant_quartic * Eigen::Map<const Eigen::Matrix<double, n * n, 1>>(gram.data());
+  const Eigen::Matrix<double, n, n> k = t.invariant_linear + k2;
+  // Q = (K₁ + K₂(e)) e (001 eq. 36 with eq. 23).
+  Eigen::Map<Eigen::Matrix<double, 3, n>>(Q.data()).noalias() = nodes * k;
+  if (K != nullptr) {
+    // J = K₁ + K₂(e) + 2 D(e), D_(a)(m) = Σ_bc τ_abcm e_b e_cᵀ (001 eq. 37, eq. A20).
+    for (int a = 0; a < n; ++a)
+      for (int m = 0; m < n; ++m) {
+        Eigen::Matrix<double, n, n> tam;  // tam(b, c) = τ_abcm
+        for (int c = 0; c < n; ++c) tam.col(c) = t.invariant_quartic.col(c + n * m).template segment<n>(n * a);
+        K->template block<3, 3>(3 * a, 3 * m) =
+            k(a, m) * Matrix3::Identity() + 2 * nodes * tam * nodes.transpose();
+      }
+  }
+  // U = U₀ + ½ Σ κ₁_ab Γ_ab + ¼ Σ κ₂_ab Γ_ab.
+  return t.invariant_constant + (0.5 * t.invariant_linear + 0.25 * k2).cwiseProduct(gram).sum();
+}
+
+template <int transverse>
+double AncfBeamElement<transverse>::gerstmayr_force(const Vector& e, Vector& Q, Matrix* K) const {
+  constexpr int n = Tables::n;
+  const Tables& t = *tables_;
+  const Eigen::Map<const Eigen::Matrix<double, 3, n>> nodes(e.data());
+  Eigen::Map<Eigen::Matrix<double, 3, n>> force(Q.data());
+  double U = 0.0;
+  Q.setZero();
+  if (K != nullptr) K->setZero();
+  Eigen::Matrix<double, 15, 1> u, gradient;
+  Eigen::Matrix<double, 15, 15> hessian;
+  Matrix3 HB[5][n];
+  for (int g = 0; g < Tables::points; ++g) {
+    // u = (B ⊗ I₃) e: the columns a, b, c, g, h of nodes · Bᵀ (eq. A7).
+    const Eigen::Matrix<double, 5, n>& B = t.coefficients[g];
+    Eigen::Map<Eigen::Matrix<double, 3, 5>>(u.data()).noalias() = nodes * B.transpose();
+    U += t.weight[g] * ancf_section_energy(t.moment, t.lambda, t.mu, t.poisson_correction, u, gradient,
+                                           K != nullptr ? &hessian : nullptr);
+    // Q = ∫ (B ⊗ I₃)ᵀ ∂W̄/∂u dx (eq. A16).
+    force.noalias() += t.weight[g] * Eigen::Map<const Eigen::Matrix<double, 3, 5>>(gradient.data()) * B;
+    if (K == nullptr) continue;
+    // K = ∫ (B ⊗ I₃)ᵀ ∂²W̄/∂u² (B ⊗ I₃) dx block by block, skipping B's zeros (each variable
+    // touches 2 to 4 of the n node vectors).
+    for (int v = 0; v < 5; ++v)
+      for (int l = 0; l < n; ++l) {
+        HB[v][l].setZero();
+        for (int w = 0; w < 5; ++w)
+          if (B(w, l) != 0.0) HB[v][l].noalias() += B(w, l) * hessian.template block<3, 3>(3 * v, 3 * w);
+      }
+    for (int k = 0; k < n; ++k)
+      for (int v = 0; v < 5; ++v) {
+        if (B(v, k) == 0.0) continue;
+        const double c = t.weight[g] * B(v, k);
+        for (int l = k; l < n; ++l) K->template block<3, 3>(3 * k, 3 * l).noalias() += c * HB[v][l];
+      }
+  }
+  if (K != nullptr)
+    for (int k = 0; k < n; ++k)
+      for (int l = k + 1; l < n; ++l) K->template block<3, 3>(3 * l, 3 * k) = K->template block<3, 3>(3 * k, 3 * l).transpose();
+  return U;
+}
+
+template <int transverse>
+typename AncfBeamElement<transverse>::Matrix AncfBeamElement<transverse>::mass_matrix() const {
+  Matrix M = Matrix::Zero();
+  for (int k = 0; k < Tables::n; ++k)
+    for (int l = 0; l < Tables::n; ++l)
+      M.template block<3, 3>(3 * k, 3 * l) = tables_->scalar_mass(k, l) * Matrix3::Identity();
+  return M;
+}
+
+template <int transverse>
+void AncfBeamElement<transverse>::evaluate(const ElementInput& in, const ElementRequest& request,
+                                           ElementOutput& out) const {
+  const Tables& t = *tables_;
+  const Vector e = coordinates(*in.q);
+  Vector Q;
+  Matrix K;
+  const double U = elastic_force(e, Q, request.stiffness ? &K : nullptr);
+  // Weight f_g = ∫ ρ Sᵀ g dV = w ⊗ g, scaled by the load factor.
+  Vector weight;
+  for (int k = 0; k < Tables::n; ++k)
+    weight.template segment<3>(3 * k) = in.load_factor * t.gravity_weights(k) * in.gravity;
+  if (request.residual) out.residual += Q - weight;
+  if (request.stiffness) out.stiffness += K;
+  // Energies are always filled (cheap here), as the solvers read them after every evaluation.
+  out.energy.strain = U;
+  out.energy.gravity = -weight.dot(e);
+  if (!in.dynamic()) return;
+  Vector v, a;
+  gather(*in.q, blocks_, *in.velocity, v);
+  gather(*in.q, blocks_, *in.acceleration, a);
+  // Constant mass matrix: M v̇, no velocity terms (001 eq. 8).
+  {
+    Vector Ma, Mv;
+    for (int k = 0; k < Tables::n; ++k) {
+      Eigen::Vector3d ma = Eigen::Vector3d::Zero(), mv = Eigen::Vector3d::Zero();
+      for (int l = 0; l < Tables::n; ++l) {
+        ma += t.scalar_mass(k, l) * a.template segment<3>(3 * l);
+        mv += t.scalar_mass(k, l) * v.template segment<3>(3 * l);
+      }
+      Ma.template segment<3>(3 * k) = ma;
+      Mv.template segment<3>(3 * k) = mv;
+    }
+    if (request.residual) out.residual += Ma;
+    out.energy.kinetic = 0.5 * v.dot(Mv);
+  }
+  if (request.mass) out.mass += mass_matrix();
+}
+
+template struct AncfShapeFunctions<2>;
+template struct AncfShapeFunctions<3>;
+template struct AncfElementTables<2>;
+template struct AncfElementTables<3>;
+template class AncfBeamElement<2>;
+template class AncfBeamElement<3>;
+
+}  // namespace spar::core

@@ -1,0 +1,254 @@
+// The ANCF beam elements (docs/ancf.md): the section-integrated Piola–Kirchhoff force and its
+// analytic Jacobian against finite differences and against a direct Gauss volume integration of
+// the same energy; strain-free rigid motions; the mass matrix and the weight.
+#include <spar/core/ancf_beam.hpp>
+#include <spar/core/elements/ancf_beam_element.hpp>
+#include <spar/error.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Geometry>
+
+#include <random>
+
+#include "ancf_reference.hpp"
+
+using namespace spar;
+
+namespace {
+
+const core::Material material{.young_modulus = 1000.0, .poisson_ratio = 0.3, .density = 2.0};
+const double length = 0.5;
+
+// An L-angle a few times thinner than the element (fourth-order moments matter), off the
+// reference line.
+std::vector<Eigen::Vector2d> l_angle() {
+  return {{-0.02, -0.01}, {0.06, -0.01}, {0.06, 0.01}, {0.0, 0.01}, {0.0, 0.05}, {-0.02, 0.05}};
+}
+
+template <int transverse>
+struct OneElement {
+  core::Model model;
+  const core::AncfBeamElement<transverse>* element = nullptr;
+
+  explicit OneElement(const core::SectionIntegrals& section,
+                      core::AncfForceMethod method = core::AncfForceMethod::gerstmayr,
+                      core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none) {
+    const core::AncfBeam beam = core::add_ancf_beam(
+        model, {.start = Eigen::Vector3d(0.1, -0.2, 0.3),
+                .end = Eigen::Vector3d(0.1, -0.2, 0.3) + length * Eigen::Vector3d(1, 2, 2) / 3.0,
+                .y_direction = Eigen::Vector3d(0, 0, 1),
+                .kind = transverse == 2 ? core::AncfElementKind::standard_24 : core::AncfElementKind::higher_order_30,
+                .method = method,
+                .remedy = remedy,
+                .material = material,
+                .section = section});
+    element = dynamic_cast<const core::AncfBeamElement<transverse>*>(&model.element(beam.elements[0]));
+  }
+};
+
+/// A large deformation: e0 plus random changes of 10 % in positions (relative to l) and gradients.
+template <int transverse>
+typename core::AncfBeamElement<transverse>::Vector deformed(const OneElement<transverse>& one, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-0.1, 0.1);
+  auto e = one.element->coordinates(one.model.state());
+  for (int k = 0; k < e.size(); ++k) e(k) += u(gen) * ((k % 12) < 3 ? length : 1.0);
+  return e;
+}
+
+double relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& reference) {
+  return (a - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
+}
+
+template <int transverse>
+void check_against_finite_differences(const core::SectionIntegrals& section, core::AncfForceMethod method,
+                                      core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none) {
+  OneElement<transverse> one(section, method, remedy);
+  using Vector = typename core::AncfBeamElement<transverse>::Vector;
+  using Matrix = typename core::AncfBeamElement<transverse>::Matrix;
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const Vector e = deformed(one, seed);
+    Vector Q;
+    Matrix K;
+    one.element->elastic_force(e, Q, &K);
+    // Central differences with step 1e-6 on coordinates of size ≤ 1: truncation ε²|U'''|/6 ≈ 1e-12
+    // relative, round-off u |U| / ε ≈ 1e-10 relative to |Q| (U ≈ |Q| · 0.1): 1e-7 leaves margin.
+    const double h = 1e-6;
+    Vector Qfd;
+    Matrix Kfd;
+    for (int i = 0; i < e.size(); ++i) {
+      Vector ep = e, em = e;
+      ep(i) += h;
+      em(i) -= h;
+      Qfd(i) = (one.element->strain_energy(ep) - one.element->strain_energy(em)) / (2 * h);
+      Vector Qp, Qm;
+      one.element->elastic_force(ep, Qp, nullptr);
+      one.element->elastic_force(em, Qm, nullptr);
+      Kfd.col(i) = (Qp - Qm) / (2 * h);
+    }
+    INFO("seed " << seed << ", " << e.size() << " coordinates");
+    CHECK(relative_error(Q, Qfd) < 1e-7);
+    CHECK(relative_error(K, Kfd) < 1e-7);
+    CHECK(relative_error(K, K.transpose()) < 1e-14);
+  }
+}
+
+template <int transverse>
+void check_against_volume_integration(const core::SectionIntegrals& section, const test::SectionQuadrature& rule) {
+  OneElement<transverse> one(section);
+  using Vector = typename core::AncfBeamElement<transverse>::Vector;
+  using Matrix = typename core::AncfBeamElement<transverse>::Matrix;
+  for (unsigned seed : {4u, 5u}) {
+    const Vector e = deformed(one, seed);
+    Vector Q;
+    Matrix K;
+    const double U = one.element->elastic_force(e, Q, &K);
+    const auto reference = test::volume_reference(*one.element, rule, e);
+    // Both routes are exact (polynomial integrands within both rules' degrees) and differ only in
+    // the order of O(100) summations with cancellation between the terms of E (≈ 1 − 1): 1e-11.
+    INFO("seed " << seed << ": U = " << U << ", reference " << reference.energy);
+    CHECK(std::fabs(U - reference.energy) <= 1e-11 * reference.energy);
+    CHECK(relative_error(Q, reference.force) < 1e-11);
+    CHECK(relative_error(K, reference.stiffness) < 1e-11);
+  }
+  CHECK(relative_error(one.element->mass_matrix(), test::volume_reference(*one.element, rule, Vector::Zero()).mass) < 1e-13);
+}
+
+}  // namespace
+
+TEST_CASE("ANCF force and Jacobian against finite differences", "[ancf][element]") {
+  for (const auto method : {core::AncfForceMethod::gerstmayr, core::AncfForceMethod::invariant}) {
+    INFO((method == core::AncfForceMethod::gerstmayr ? "method II" : "method I"));
+    check_against_finite_differences<2>(core::SectionIntegrals::circle(0.03), method);
+    check_against_finite_differences<2>(core::SectionIntegrals::polygon(l_angle()), method);
+    check_against_finite_differences<3>(core::SectionIntegrals::circle(0.03), method);
+    check_against_finite_differences<3>(core::SectionIntegrals::polygon(l_angle()), method);
+  }
+}
+
+template <int transverse>
+void check_methods_agree(const core::SectionIntegrals& section,
+                         core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none) {
+  OneElement<transverse> one(section, core::AncfForceMethod::gerstmayr, remedy);
+  OneElement<transverse> two(section, core::AncfForceMethod::invariant, remedy);
+  using Vector = typename core::AncfBeamElement<transverse>::Vector;
+  using Matrix = typename core::AncfBeamElement<transverse>::Matrix;
+  for (unsigned seed : {6u, 7u}) {
+    const Vector e = deformed(one, seed);
+    Vector Q1, Q2;
+    Matrix K1, K2;
+    const double U1 = one.element->elastic_force(e, Q1, &K1), U2 = two.element->elastic_force(e, Q2, &K2);
+    // Method I sums terms of size λ|e|⁴ that cancel down to the strain energy (E ≈ 0.1 here):
+    // its round-off is ≈ 1e-16 · λ|e|⁴ / (E² λ) ≈ 1e-14 relative; 1e-12 leaves margin.
+    CHECK(std::fabs(U1 - U2) <= 1e-12 * U1);
+    CHECK(relative_error(Q2, Q1) < 1e-12);
+    CHECK(relative_error(K2, K1) < 1e-12);
+  }
+}
+
+TEST_CASE("ANCF methods I (invariant) and II (Gerstmayr) agree to round-off", "[ancf][element]") {
+  check_methods_agree<2>(core::SectionIntegrals::polygon(l_angle()));
+  check_methods_agree<3>(core::SectionIntegrals::polygon(l_angle()));
+  check_methods_agree<2>(core::SectionIntegrals::circle(0.03).truncated_to_second_order());
+}
+
+TEST_CASE("ANCF section integrals reproduce a direct volume integration", "[ancf][element]") {
+  SECTION("24 coordinates, L-angle") {
+    check_against_volume_integration<2>(core::SectionIntegrals::polygon(l_angle()), test::polygon_quadrature(l_angle()));
+  }
+  SECTION("30 coordinates, L-angle") {
+    check_against_volume_integration<3>(core::SectionIntegrals::polygon(l_angle()), test::polygon_quadrature(l_angle()));
+  }
+  SECTION("24 coordinates, off-centre circle") {
+    check_against_volume_integration<2>(core::SectionIntegrals::circle(0.03, {0.01, -0.02}),
+                                        test::circle_quadrature(0.03, {0.01, -0.02}));
+  }
+}
+
+TEST_CASE("ANCF Poisson locking remedy: derivatives and both methods", "[ancf][element]") {
+  const auto remedy = core::AncfLockingRemedy::uniaxial_bending;
+  for (const auto method : {core::AncfForceMethod::gerstmayr, core::AncfForceMethod::invariant}) {
+    check_against_finite_differences<2>(core::SectionIntegrals::polygon(l_angle()), method, remedy);
+    check_against_finite_differences<3>(core::SectionIntegrals::circle(0.03), method, remedy);
+  }
+  check_methods_agree<2>(core::SectionIntegrals::polygon(l_angle()), remedy);
+  check_methods_agree<3>(core::SectionIntegrals::polygon(l_angle()), remedy);
+  // The remedy changes only the section-varying axial strain: a uniform stretch with free
+  // lateral contraction and a rigid rotation give the same energy as without it.
+  OneElement<2> with(core::SectionIntegrals::polygon(l_angle()), core::AncfForceMethod::gerstmayr, remedy);
+  OneElement<2> without(core::SectionIntegrals::polygon(l_angle()));
+  auto e = with.element->coordinates(with.model.state());
+  for (int k = 0; k < 8; ++k) e.segment<3>(3 * k) *= (k % 4 == 0 || k % 4 == 1) ? 1.1 : 0.97;
+  core::AncfBeam24Element::Vector Q1, Q2;
+  const double U1 = with.element->elastic_force(e, Q1, nullptr), U2 = without.element->elastic_force(e, Q2, nullptr);
+  CHECK(std::fabs(U1 - U2) <= 1e-13 * U2);
+  CHECK(relative_error(Q1, Q2) < 1e-13);
+}
+
+TEST_CASE("ANCF rigid motions are strain free", "[ancf][element]") {
+  OneElement<2> one(core::SectionIntegrals::polygon(l_angle()));
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(2.1, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  auto e = one.element->coordinates(one.model.state());
+  for (int k = 0; k < 8; ++k)
+    e.segment<3>(3 * k) = R * e.segment<3>(3 * k) + ((k % 4) == 0 ? Eigen::Vector3d(1, 2, 3) : Eigen::Vector3d::Zero());
+  core::AncfBeam24Element::Vector Q;
+  const double U = one.element->elastic_force(e, Q, nullptr);
+  // Round-off of E = ½(FᵀF − I) with O(1) entries is ≈ 1e-16: U ≈ E l A ε² and |Q| ≈ E A ε.
+  const double EA = material.young_modulus * one.element->tables().moment[0][0][0][0];
+  CHECK(std::fabs(U) < 1e-28 * EA * length);
+  CHECK(Q.cwiseAbs().maxCoeff() < 1e-13 * EA);
+}
+
+TEST_CASE("ANCF uniform stretch against the closed form", "[ancf][element]") {
+  // ν = 0, r = (1 + ε) x: E₁₁ = ((1 + ε)² − 1)/2, U = ½ E A l E₁₁², N = ∂U/∂(l ε)... at node B
+  // the axial force is E A E₁₁ (1 + ε) (P₁₁ = F₁₁ S₁₁).
+  const core::Material no_poisson{.young_modulus = 1000.0, .poisson_ratio = 0.0, .density = 2.0};
+  core::Model model;
+  const auto section = core::SectionIntegrals::rectangle(0.02, 0.01);
+  const core::AncfBeam beam = core::add_ancf_beam(model, {.end = Eigen::Vector3d(length, 0, 0), .material = no_poisson,
+                                                          .section = section});
+  const auto& element = dynamic_cast<const core::AncfBeam24Element&>(model.element(beam.elements[0]));
+  const double eps = 0.2;
+  auto e = element.coordinates(model.state());
+  e.segment<3>(12) *= 1 + eps;  // r_B
+  e.segment<3>(3) *= 1 + eps;   // r_x,A
+  e.segment<3>(15) *= 1 + eps;  // r_x,B
+  core::AncfBeam24Element::Vector Q;
+  const double U = element.elastic_force(e, Q, nullptr);
+  const double E11 = ((1 + eps) * (1 + eps) - 1) / 2, A = section.area();
+  CHECK(U == Approx(0.5 * 1000.0 * A * length * E11 * E11).epsilon(1e-13));
+  CHECK(Q(12) == Approx(1000.0 * A * E11 * (1 + eps)).epsilon(1e-13));
+}
+
+TEST_CASE("ANCF mass and weight", "[ancf][element]") {
+  core::Model model;
+  const auto section = core::SectionIntegrals::circle(0.02);
+  const core::AncfBeam beam = core::add_ancf_beam(model, {.end = Eigen::Vector3d(length, 0, 0), .kind = core::AncfElementKind::higher_order_30,
+                                                          .material = material, .section = section});
+  const auto& element = dynamic_cast<const core::AncfBeam30Element&>(model.element(beam.elements[0]));
+  const double m = material.density * section.area() * length;
+  // A rigid translation v: kinetic energy ½ m |v|²; the weight sums to m g on the positions.
+  auto v = core::AncfBeam30Element::Vector::Zero().eval();
+  v.segment<3>(0) = v.segment<3>(12) = Eigen::Vector3d(1, -2, 0.5);
+  CHECK(0.5 * v.dot(element.mass_matrix() * v) == Approx(0.5 * m * 5.25).epsilon(1e-14));
+  const auto& w = element.tables().gravity_weights;
+  CHECK(w(0) + w(4) == Approx(m).epsilon(1e-14));
+  CHECK(w(1) == Approx(m * length / 12).epsilon(1e-14));  // Hermite: ∫ S2 dx = l²/12
+  CHECK(w(2) == 0.0);  // a centred section: no first moment
+}
+
+TEST_CASE("ANCF element input errors", "[ancf][element]") {
+  core::Model model;
+  CHECK_THROWS_AS(core::add_ancf_beam(model, {.elements = 0, .material = material,
+                                              .section = core::SectionIntegrals::circle(0.01)}), Error);
+  CHECK_THROWS_AS(core::add_ancf_beam(model, {.y_direction = Eigen::Vector3d::UnitX(), .material = material,
+                                              .section = core::SectionIntegrals::circle(0.01)}), Error);
+  const core::AncfBeam beam = core::add_ancf_beam(model, {.material = material, .section = core::SectionIntegrals::circle(0.01)});
+  // A curved reference configuration is refused.
+  core::Configuration bent = model.state();
+  bent.vector(beam.nodes[1]).segment<3>(3) = Eigen::Vector3d(1, 1, 0).normalized();
+  const auto tables = std::make_shared<const core::AncfElementTables<2>>(1.0, material, core::SectionIntegrals::circle(0.01));
+  CHECK_THROWS_AS(core::AncfBeam24Element({beam.nodes[0], beam.nodes[1]}, tables, bent, 0), Error);
+  CHECK_THROWS_AS(core::add_ancf_nodal_force(model, 99, Eigen::Vector3d::UnitZ()), Error);
+}
