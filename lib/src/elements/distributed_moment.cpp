@@ -1,7 +1,7 @@
 // Distributed moments on beam elements (docs/beam.md B14).
 #include <spar/core/distributed_moment.hpp>
 
-#include "beam_interpolation.hpp"
+#include "../beam_interpolation.hpp"
 
 #include <spar/lie/lie.hpp>
 

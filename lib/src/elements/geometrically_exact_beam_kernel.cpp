@@ -9,7 +9,7 @@
 //   3. the nonlinear map y ← Δ through ψ_I(Δφ_0, Δφ_I), first and second order (B10–B11).
 #include <spar/core/beam_element.hpp>
 
-#include "beam_interpolation.hpp"
+#include "../beam_interpolation.hpp"
 
 #include <spar/error.hpp>
 #include <spar/lie/lie.hpp>
