@@ -2,10 +2,13 @@
 // Shared fixtures of the RANCF tests: one element's blocks in a configuration, a deformed random
 // state, and evaluation helpers with central finite differences over the local coordinates.
 #include <spar/core/elements/rancf_cable_element.hpp>
+#include <spar/core/model.hpp>
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <random>
+#include <vector>
 
 namespace spar::test {
 
@@ -97,5 +100,56 @@ inline Eigen::MatrixXd residual_difference(const core::Element& element, const R
 inline double relative_difference(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
   return (A - B).cwiseAbs().maxCoeff() / B.cwiseAbs().maxCoeff();
 }
+
+/// A straight cable along +X of `elements` equal elements (unit weights: a straight line with
+/// r_x = e_1 is stress-free only when the parameterization is by arc length), fixed-length RANCF
+/// or ALE-RANCF (material coordinates as scalar blocks, x_i = i L/elements).
+struct RancfCable {
+  core::Model model;
+  std::vector<int> nodes;      ///< [r, r_x] blocks
+  std::vector<int> materials;  ///< x blocks (ALE only)
+};
+
+template <int Dim>
+RancfCable make_straight_cable(int elements, double length, const core::RancfSection& section, bool ale) {
+  RancfCable c;
+  const double h = length / elements;
+  for (int i = 0; i <= elements; ++i) {
+    Eigen::VectorXd node = Eigen::VectorXd::Zero(2 * Dim);
+    node(0) = i * h;
+    node(Dim) = 1.0;
+    c.nodes.push_back(c.model.add_vector(node));
+    if (ale) c.materials.push_back(c.model.add_vector(Eigen::VectorXd::Constant(1, i * h)));
+  }
+  for (int i = 0; i < elements; ++i) {
+    core::RancfCableParameters p{.node_a = c.nodes[i], .node_b = c.nodes[i + 1], .length = h,
+                                 .section = section, .name = "cable element " + std::to_string(i)};
+    if (ale) {
+      p.material_a = c.materials[i];
+      p.material_b = c.materials[i + 1];
+      c.model.add_element(std::make_unique<core::AleRancfCableElement<Dim>>(p));
+    } else {
+      c.model.add_element(std::make_unique<core::RancfCableElement<Dim>>(p));
+    }
+  }
+  return c;
+}
+
+/// A dead force λ F on the position entries of a vector block [r, r_x] (statics).
+template <int Dim>
+class NodeForce final : public core::Element {
+public:
+  NodeForce(int node, const Eigen::Matrix<double, Dim, 1>& force) : blocks_{node}, force_(force) {}
+  const std::vector<int>& blocks() const override { return blocks_; }
+  void evaluate(const core::ElementInput& in, const core::ElementRequest& request,
+                core::ElementOutput& out) const override {
+    if (request.residual) out.residual.template head<Dim>() -= in.load_factor * force_;
+  }
+  std::string name() const override { return "tip force"; }
+
+private:
+  std::vector<int> blocks_;
+  Eigen::Matrix<double, Dim, 1> force_;
+};
 
 }  // namespace spar::test
