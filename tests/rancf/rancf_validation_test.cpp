@@ -94,8 +94,9 @@ TEST_CASE("swinging RANCF and ALE-RANCF cables conserve energy to the integrator
     const double fine = swinging_cable_drift(ale, 1e-3, 200);
     INFO((ale ? "ALE" : "fixed") << ": drift " << coarse << " (h = 2e-3), " << fine << " (h = 1e-3)");
     // Measured 8.1e-7 (fixed) and 4.4e-7 (ALE) of m g L/2 at h = 1e-3, falling as h² (ratio
-    // ≈ 4): the trapezoidal rule's energy error on a nonlinear system. A non-Lagrangian force
-    // (e.g. 000 eq. (19)'s M q̈ + Q_a alone) drifts at O(1) of this scale instead.
+    // ≈ 4): the trapezoidal rule's energy error on a nonlinear system. Forces that were not the
+    // gradient/Euler–Lagrange expression of the reported energies would leave a drift that does
+    // not fall with h.
     CHECK(fine <= 5e-6);
     CHECK(fine <= coarse / 3);
   }
