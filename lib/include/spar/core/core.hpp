@@ -14,6 +14,7 @@
 #include <spar/core/elements/load_elements.hpp>
 #include <spar/core/elements/point_mass_element.hpp>
 #include <spar/core/elements/rancf_cable_element.hpp>
+#include <spar/core/elements/rancf_merging.hpp>
 #include <spar/core/elements/rancf_segmentation.hpp>
 #include <spar/core/elements/rigid_body_element.hpp>
 #include <spar/core/hdf5_file.hpp>
