@@ -34,7 +34,7 @@ struct Segment {
 template <int Dim>
 std::pair<Vec<Dim>, Vec<Dim>> field_at(const Segment<Dim>& s, double x) {
   const double l = s.x_b - s.x_a, u = (x - s.x_a) / l;
-  const Eigen::Matrix<double, 4, 3> sh = iga::rancf_shape_function_derivatives(u, s.w);
+  const Eigen::Matrix<double, 4, 4> sh = iga::rancf_shape_function_derivatives(u, s.w);
   Vec<Dim> r = Vec<Dim>::Zero(), r_dot = Vec<Dim>::Zero(), R_u = Vec<Dim>::Zero(), R_l = Vec<Dim>::Zero();
   for (int k = 0; k < 4; ++k) {
     const double scale = k % 2 == 1 ? l : 1.0;

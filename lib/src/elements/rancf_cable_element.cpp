@@ -6,6 +6,7 @@
 #include "rancf_kernel.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 namespace spar::core {
 
@@ -28,11 +29,12 @@ void check_parameters(const RancfCableParameters& p, bool ale, const char* where
     throw Error("reference length " + std::to_string(p.length) + " is not positive", where,
                 "give l > 0");
   if (!positive(p.section.axial_stiffness) || !(p.section.bending_stiffness >= 0.0) ||
-      !positive(p.section.mass_per_length))
+      !positive(p.section.mass_per_length) || !(p.section.damping_coefficient >= 0.0))
     throw Error("section EA = " + std::to_string(p.section.axial_stiffness) +
                     ", EI = " + std::to_string(p.section.bending_stiffness) +
-                    ", rho A = " + std::to_string(p.section.mass_per_length) + " is not physical",
-                where, "give EA > 0, EI ≥ 0 and rho A > 0");
+                    ", rho A = " + std::to_string(p.section.mass_per_length) +
+                    ", c = " + std::to_string(p.section.damping_coefficient) + " is not physical",
+                where, "give EA > 0, EI ≥ 0, rho A > 0 and c ≥ 0");
   for (int i = 0; i < 4; ++i)
     if (!positive(p.weights(i)))
       throw Error("weight w" + std::to_string(i) + " = " + std::to_string(p.weights(i)) +
@@ -96,28 +98,48 @@ void RancfCableElement<Dim>::evaluate(const ElementInput& in, const ElementReque
   local << q.vector(blocks_[0]), q.vector(blocks_[1]);
   const double l = parameters_.length;
 
-  // Strain energy U(e) and f_int = ∂U/∂e (eq. R5); K = ∂²U/∂e² from the gradient in duals.
-  if (request.stiffness) {
-    using D = Dual<n>;
-    rancf::Nodal<D, Dim> e;
-    for (int k = 0; k < 4; ++k)
-      for (int i = 0; i < Dim; ++i) e[k](i) = D::variable(local(k * Dim + i), k * Dim + i);
-    rancf::Nodal<D, Dim> grad = zero_nodal<D, Dim>();
-    D grad_l(0.0);
-    const D energy = rancf::strain_energy<D, Dim>(parameters_.section, table_, e, D(l), grad, grad_l);
+  // Strain energy U(e), f_int = ∂U/∂e (eq. R5) and the Kelvin–Voigt force (eq. R13, zero
+  // material rates); K and C from one pass in duals seeded on e (and ė when damped).
+  const bool viscous = in.dynamic() && parameters_.section.damping_coefficient > 0.0;
+  LocalVector<double, Dim> rate = LocalVector<double, Dim>::Zero();
+  if (viscous) gather(q, blocks_, *in.velocity, rate);
+  const auto internal = [&]<class T>(const rancf::Nodal<T, Dim>& e, const rancf::Nodal<T, Dim>& e_dot,
+                                     rancf::Nodal<T, Dim>& force) {
+    T grad_l(0.0), f_a(0.0), f_b(0.0);
+    const T energy = rancf::strain_energy<T, Dim>(parameters_.section, table_, e, T(l), force, grad_l);
+    if (viscous)
+      rancf::viscous_force<T, Dim>(parameters_.section, table_, e, T(l), e_dot, T(0.0), T(0.0), force,
+                                   f_a, f_b);
+    out.energy.strain = value_of(energy);
+  };
+  const auto with_duals = [&]<int N>(std::integral_constant<int, N>) {
+    using D = Dual<N>;
+    rancf::Nodal<D, Dim> e, e_dot;
     for (int k = 0; k < 4; ++k)
       for (int i = 0; i < Dim; ++i) {
-        if (request.residual) out.residual(k * Dim + i) += grad[k](i).value;
-        out.stiffness.row(k * Dim + i) += grad[k](i).grad.transpose();
+        e[k](i) = D::variable(local(k * Dim + i), k * Dim + i);
+        e_dot[k](i) = N > n ? D::variable(rate(k * Dim + i), n + k * Dim + i) : D(rate(k * Dim + i));
       }
-    out.energy.strain = energy.value;
-  } else {
-    rancf::Nodal<double, Dim> grad = zero_nodal<double, Dim>();
-    double grad_l = 0.0;
-    out.energy.strain = rancf::strain_energy<double, Dim>(parameters_.section, table_,
-                                                          nodal<double, Dim>(local), l, grad, grad_l);
+    rancf::Nodal<D, Dim> force = zero_nodal<D, Dim>();
+    internal(e, e_dot, force);
+    for (int k = 0; k < 4; ++k)
+      for (int i = 0; i < Dim; ++i) {
+        const D& f = force[k](i);
+        if (request.residual) out.residual(k * Dim + i) += f.value;
+        if (request.stiffness) out.stiffness.row(k * Dim + i) += f.grad.template head<n>().transpose();
+        if constexpr (N > n)
+          if (request.damping) out.damping.row(k * Dim + i) += f.grad.template tail<n>().transpose();
+      }
+  };
+  if (viscous && request.damping)
+    with_duals(std::integral_constant<int, 2 * n>{});
+  else if (request.stiffness)
+    with_duals(std::integral_constant<int, n>{});
+  else {
+    rancf::Nodal<double, Dim> force = zero_nodal<double, Dim>();
+    internal(nodal<double, Dim>(local), nodal<double, Dim>(rate), force);
     if (request.residual)
-      for (int k = 0; k < 4; ++k) out.residual.template segment<Dim>(k * Dim) += grad[k];
+      for (int k = 0; k < 4; ++k) out.residual.template segment<Dim>(k * Dim) += force[k];
   }
 
   // Gravity (eq. R6): linear in e at fixed l, no stiffness.
@@ -179,6 +201,9 @@ void ale_residual(const RancfCableParameters& parameters,
     energy.kinetic = value_of(rancf::ale_inertia<T, Dim>(
         parameters.section.mass_per_length, table, e, x_a, x_b, e_dot, v(n - 2), v(n - 1), e_acc,
         a(n - 2), a(n - 1), f_e, f_a, f_b));
+    if (parameters.section.damping_coefficient > 0.0)
+      rancf::viscous_force<T, Dim>(parameters.section, table, e, l, e_dot, v(n - 2), v(n - 1), f_e,
+                                   f_a, f_b);
   }
   for (int k = 0; k < 4; ++k) r.template segment<Dim>(k * Dim) = f_e[k];
   r(n - 2) = f_a;

@@ -5,6 +5,7 @@
 // element moves through the material (ALE). Templated on the scalar so the elements can evaluate
 // it with dual numbers (core/dual.hpp) for their exact Jacobians.
 
+#include <spar/core/dual.hpp>
 #include <spar/core/elements/rancf_cable_element.hpp>
 #include <spar/iga/quadrature.hpp>
 #include <spar/iga/rational_bezier.hpp>
@@ -139,6 +140,61 @@ T gravity_potential(double mass_per_length, const std::vector<QuadraturePoint>& 
   }
   grad_l -= T(mass_per_length) * (linear + T(2.0) * l * quadratic);
   return -T(mass_per_length) * (l * linear + l * l * quadratic);
+}
+
+/// The Kelvin–Voigt force of 000 eq. (17): the stresses EA c ε̇ and EI c k̇ with the rates taken
+/// at a fixed material point (docs/rancf.md eq. R13). At the Gauss point u_g, whose material
+/// coordinate changes at ẋ_g = (1 − u_g) ẋ_A + u_g ẋ_B, so u̇ = −ẋ_g/l at a fixed material point:
+///   ṙ_u = R_u(ė) + R_ul l̇ + r_uu u̇,  ṙ_uu = R_uu(ė) + R_uul l̇ + r_uuu u̇,
+///   ε̇ = r_u·ṙ_u/l² − |r_u|² l̇/l³,  k̇ = (ṙ_u × r_uu + r_u × ṙ_uu)/s^{3/2} − 3 (r_u·ṙ_u) c/s^{5/2},
+/// s = |r_u|², c = r_u × r_uu. The force is ∂D/∂q̇ of the Rayleigh function
+/// D = ½ c_KV l Σ_g w_g (EA ε̇² + EI |k̇|²) (the paper's (∂ε/∂q)ᵀ EA c ε̇ + (∂κ/∂q)ᵀ EI c κ̇ with
+/// the curvature vector k in place of κ = |k|, whose derivative is singular for a straight
+/// cable); q̇·f = 2D ≥ 0 is the dissipated power. For a fixed-length element pass zero material
+/// rates. Adds to f_e, f_a, f_b; returns 2D.
+template <class T, int Dim>
+T viscous_force(const RancfSection& section, const std::vector<QuadraturePoint>& table,
+                const Nodal<T, Dim>& e, const T& l, const Nodal<T, Dim>& e_dot, const T& x_a_dot,
+                const T& x_b_dot, Nodal<T, Dim>& f_e, T& f_a, T& f_b) {
+  using std::sqrt;
+  const double c_kv = section.damping_coefficient;
+  const T l_dot = x_b_dot - x_a_dot;
+  const T inv_l = T(1.0) / l;
+  T power(0.0);
+  for (const QuadraturePoint& p : table) {
+    const double u = p.u;
+    const T u_dot = -(T(1.0 - u) * x_a_dot + T(u) * x_b_dot) * inv_l;
+    const Vec<T, Dim> r_u = field(p, e, l, 1), r_uu = field(p, e, l, 2), r_uuu = field(p, e, l, 3);
+    const Vec<T, Dim> R_ul = field_length_derivative(p, e, 1), R_uul = field_length_derivative(p, e, 2);
+    const Vec<T, Dim> r_u_dot = field(p, e_dot, l, 1) + R_ul * l_dot + r_uu * u_dot;
+    const Vec<T, Dim> r_uu_dot = field(p, e_dot, l, 2) + R_uul * l_dot + r_uuu * u_dot;
+    const T s = r_u.squaredNorm();
+    const T root_s = sqrt(s);
+    const T inv_s15 = T(1.0) / (s * root_s);
+    const auto c = cross(r_u, r_uu);
+    const T r_u_rate = r_u.dot(r_u_dot);
+    const T eps_dot = r_u_rate * inv_l * inv_l - s * l_dot * inv_l * inv_l * inv_l;
+    const auto k_dot = ((cross(r_u_dot, r_uu) + cross(r_u, r_uu_dot)) * inv_s15 -
+                        c * (T(3.0) * r_u_rate * inv_s15 / s))
+                           .eval();
+    // ∂D/∂ṙ_u, ∂D/∂ṙ_uu, ∂D/∂l̇ (explicit), per unit c_KV l w_g.
+    const Vec<T, Dim> g_u = r_u * (T(section.axial_stiffness) * eps_dot * inv_l * inv_l) +
+                            (cross_gradient_a(r_uu, k_dot) * inv_s15 -
+                             r_u * (T(3.0) * c.dot(k_dot) * inv_s15 / s)) *
+                                T(section.bending_stiffness);
+    const Vec<T, Dim> g_uu = cross_gradient_b(r_u, k_dot) * (inv_s15 * T(section.bending_stiffness));
+    const T g_l = -T(section.axial_stiffness) * eps_dot * s * inv_l * inv_l * inv_l;
+    const T weight = T(c_kv * p.weight) * l;
+    for (int k = 0; k < 4; ++k)
+      f_e[k] += (g_u * sigma(p, k, 1, l) + g_uu * sigma(p, k, 2, l)) * weight;
+    const T along_a = g_u.dot(R_ul) + g_uu.dot(R_uul) + g_l;
+    const T convective = g_u.dot(r_uu) + g_uu.dot(r_uuu);
+    f_a += weight * (-along_a - T(1.0 - u) * inv_l * convective);
+    f_b += weight * (along_a - T(u) * inv_l * convective);
+    power += weight * (T(section.axial_stiffness) * eps_dot * eps_dot +
+                       T(section.bending_stiffness) * k_dot.squaredNorm());
+  }
+  return power;
 }
 
 /// The inertial force of an ALE-RANCF element and its kinetic energy (docs/rancf.md eqs. R7–R11).

@@ -30,7 +30,7 @@ RancfSplit<Dim> split_rancf_element(const Eigen::Matrix<double, 4 * Dim, 1>& e, 
 
   // J = ∂Φ/∂q (docs/rancf.md eq. R22): r_H = R(u_H; e, l), r_x^H = t = R_u/l,
   // x_H = (1 − u_H) x_A + u_H x_B, with σ_k of eq. R3 and ∂/∂x_A = −∂/∂l, ∂/∂x_B = ∂/∂l.
-  const Eigen::Matrix<double, 4, 3> sh = iga::rancf_shape_function_derivatives(u_h, weights);
+  const Eigen::Matrix<double, 4, 4> sh = iga::rancf_shape_function_derivatives(u_h, weights);
   const auto block = [&](int k) { return e.template segment<Dim>(k * Dim); };
   const auto rate = [&](int k) { return rates.template segment<Dim>(k * Dim); };
   const Vec R_l = sh(1, 0) * block(1) + sh(3, 0) * block(3);

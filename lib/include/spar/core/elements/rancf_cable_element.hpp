@@ -16,8 +16,8 @@
 ///   [node A, node B, x_A, x_B]. With unit weights it is the ALE-ANCF element.
 ///
 /// Both: axial strain ε = (r_xᵀ r_x − 1)/2 and curvature κ = |r_x × r_xx|/|r_x|³ (000 eq. (19))
-/// with energy ∫ (EA ε² + EI κ²)/2 dx (no Kelvin–Voigt damping: docs/rancf.md, "Open"), gravity
-/// ρA g, all by Gauss–Legendre quadrature in u. Stiffness and damping are exact: the residual is
+/// with energy ∫ (EA ε² + EI κ²)/2 dx and Kelvin–Voigt damping (000 eq. (17)), gravity ρA g, all
+/// by Gauss–Legendre quadrature in u. Stiffness and damping are exact: the residual is
 /// evaluated with dual numbers (core/dual.hpp).
 
 #include <spar/core/element.hpp>
@@ -30,12 +30,12 @@
 namespace spar::core {
 
 namespace rancf {
-/// One Gauss point on u ∈ [0, 1]: u, its weight, and the shape functions with their first two
-/// u-derivatives (iga::rancf_shape_function_derivatives: s_2 and s_4 divided by l).
+/// One Gauss point on u ∈ [0, 1]: u, its weight, and the shape functions with their first
+/// three u-derivatives (iga::rancf_shape_function_derivatives: s_2 and s_4 divided by l).
 struct QuadraturePoint {
   double u = 0.0;
   double weight = 0.0;
-  Eigen::Matrix<double, 4, 3> s;
+  Eigen::Matrix<double, 4, 4> s;
 };
 }  // namespace rancf
 
@@ -44,6 +44,8 @@ struct RancfSection {
   double axial_stiffness = 0.0;    ///< EA (N)
   double bending_stiffness = 0.0;  ///< EI (N m²)
   double mass_per_length = 0.0;    ///< ρA (kg/m)
+  /// Kelvin–Voigt coefficient c (s): axial force EA (ε + c ε̇), moment EI (κ + c κ̇) (000 eq. (17)).
+  double damping_coefficient = 0.0;
 };
 
 /// What a RANCF or ALE-RANCF element is built from.
