@@ -3,7 +3,7 @@
 /// Forward-mode dual numbers a + Σ_i d_i ε_i (ε_i ε_j = 0) with a fixed number N of derivative
 /// directions, usable as the scalar of fixed-size Eigen matrices (NumTraits below).
 ///
-/// Why here: the ALE-RANCF element's residual (docs/rancf.md eqs. R12–R16) is a rational function
+/// Why here: the ALE-RANCF element's residual (docs/rancf.md eqs. R11–R13) is a rational function
 /// of the nodal coordinates, the two material coordinates and the velocities whose derivatives
 /// (∂(M(q)q̈)/∂q, the quadratic-velocity terms, the bending Hessian through (x_A, x_B)) would take
 /// hundreds of hand-written terms. Evaluating the hand-written residual once with duals seeded on
