@@ -160,6 +160,32 @@ void check_operator() {
 
 }  // namespace
 
+TEST_CASE("segmentation: H held at its material point gets the material velocity and slope rate",
+          "[rancf][segmentation]") {
+  const Segment<3> s = random_segment<3>(35);
+  const core::RancfSplit<3> split = core::split_rancf_element<3>(s.e, s.x_a, s.x_b, s.w, 0.42, s.rates);
+  const Eigen::Matrix<double, 7, 1> rates = split.material_jacobian * s.rates;
+  const double x_h = split.node(6);
+  // The material velocity at x_H (000 eq. (14)) and the rate of r_x at fixed x_H by central
+  // differences in time along q + t q̇ (h = 1e-6: ~1e-10 truncation and round-off; 1e-8).
+  const auto [r_h, v_h] = field_at(s, x_h);
+  CHECK((rates.head<3>() - v_h).cwiseAbs().maxCoeff() <= 1e-13 * v_h.norm());
+  const auto slope_at = [&](double t) {
+    Segment<3> moved = s;
+    moved.e += t * s.rates.head<12>();
+    moved.x_a += t * s.rates(12);
+    moved.x_b += t * s.rates(13);
+    return core::split_rancf_element<3>(moved.e, moved.x_a, moved.x_b, moved.w,
+                                        (x_h - moved.x_a) / (moved.x_b - moved.x_a), s.rates)
+        .node.segment<3>(3)
+        .eval();
+  };
+  const double h = 1e-6;
+  const Eigen::Vector3d slope_rate = (slope_at(h) - slope_at(-h)) / (2 * h);
+  CHECK((rates.segment<3>(3) - slope_rate).cwiseAbs().maxCoeff() <= 1e-8 * slope_rate.norm());
+  CHECK(rates(6) == 0.0);
+}
+
 TEST_CASE("segmentation: velocity operator J and convective acceleration against differences",
           "[rancf][segmentation]") {
   check_operator<2>();

@@ -50,6 +50,16 @@ RancfSplit<Dim> split_rancf_element(const Eigen::Matrix<double, 4 * Dim, 1>& e, 
   s.jacobian(2 * Dim, 4 * Dim) = 1.0 - u_h;
   s.jacobian(2 * Dim, 4 * Dim + 1) = u_h;
 
+  // Eq. R30: at the fixed material point x_H, u̇ = −ẋ_g/l with ẋ_g = J_x q̇, so
+  // ṙ = J_r q̇ − r_x ẋ_g and ṙ_x = J_t q̇ − (R_uu/l²) ẋ_g.
+  Vec R_uu = Vec::Zero();
+  for (int k = 0; k < 4; ++k) R_uu += (k % 2 == 1 ? l * sh(k, 2) : sh(k, 2)) * block(k);
+  const Vec r_x = s.node.template segment<Dim>(Dim);
+  s.material_jacobian = s.jacobian;
+  s.material_jacobian.template topRows<Dim>() -= r_x * s.jacobian.row(2 * Dim);
+  s.material_jacobian.template middleRows<Dim>(Dim) -= (R_uu / (l * l)) * s.jacobian.row(2 * Dim);
+  s.material_jacobian.row(2 * Dim).setZero();
+
   // J̇ q̇: r_H is bilinear in (e, l), so d²r_H/dt² − J q̈ = 2 R_l(ė) l̇; r_x^H = (s1' r_A + s3' r_B)/l
   // + (ŝ2' r_x^A + ŝ4' r_x^B) gives 2 ∂²t/∂e∂l[ė] l̇ + ∂²t/∂l² l̇² with
   // ∂²t/∂e∂l[ė] = −(s1' ṙ_A + s3' ṙ_B)/l², ∂²t/∂l² = 2 (s1' r_A + s3' r_B)/l³; x_H is linear.

@@ -23,4 +23,5 @@
 #include <spar/core/model.hpp>
 #include <spar/core/progress_bar.hpp>
 #include <spar/core/results_writer.hpp>
+#include <spar/core/sliding_cable.hpp>
 #include <spar/core/sparse_assembly.hpp>

@@ -29,6 +29,12 @@ struct RancfSplit {
   /// J̇ q̇ for the old rates q̇ given to split_rancf_element: the new node's accelerations are
   /// J q̈ + this.
   Eigen::Matrix<double, node_size, 1> convective_acceleration;
+  /// The rates of [r_H, r_x^H, x_H] when H is held at its material point after the split (x_H a
+  /// fixed coordinate, as when one half becomes a fixed-length element, 000 §5): the material
+  /// velocity and slope rate at x_H, ẋ_H = 0 (docs/rancf.md eq. R30). Exact at H; between the
+  /// nodes the new elements interpolate the old material velocity field, which they cannot
+  /// represent exactly while ẋ_A or ẋ_B ≠ 0 (it has the denominator W², theirs W).
+  Eigen::Matrix<double, node_size, old_size> material_jacobian;
 };
 
 /// Splits the element with nodal coordinates e = [r_A, r_x^A, r_B, r_x^B], material coordinates

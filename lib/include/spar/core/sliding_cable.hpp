@@ -1,0 +1,101 @@
+#pragma once
+/// \file
+/// A cable with a sliding node and element length control (paper 000 §5; docs/rancf.md,
+/// "Sliding node and length control").
+///
+/// The cable lies straight along +X from the origin. Every node is a vector block [r, r_x]; every
+/// node has a scalar material-coordinate block, fixed (a Dirichlet dof) except at the sliding node.
+/// The two elements next to the sliding node are ALE-RANCF, the others fixed-length RANCF; a point
+/// mass on the sliding node is the lumped mass sliding without friction. The slope is continuous
+/// across the sliding node (000 eq. (40), first case: one r_x per node, no constraint).
+///
+/// Initial mesh: elements of L_std = L/N, except that one interior node is left out so that the
+/// two elements next to the sliding node span 2 L_std together; that sum is kept by every length
+/// control event, so after the first event every element stays in [0.5, 1.5] L_std.
+///
+/// Length control (000 §5, Figure 7): when an element next to the sliding node exceeds
+/// 1.5 L_std, a node H is inserted in it (de Casteljau, exact) so that the element away from the
+/// sliding node is L_std, and the node next to the sliding node on the other side is deleted
+/// (merge, least-squares weights or unit weights for ALE-ANCF). The node count and the block
+/// layout stay the same: the deleted node's blocks are reused for H. Rates are carried by the map
+/// P (new dofs × old dofs) for GeneralizedAlpha::remap: on H's rows the material velocity and
+/// slope rate at x_H (RancfSplit::material_jacobian; H's material coordinate is fixed from then
+/// on), the identity elsewhere (the merge keeps A's and B's rates). The caller then restarts the
+/// accelerations (GeneralizedAlpha::initialize): the merged system's are not the mapped ones.
+
+#include <spar/core/elements/rancf_cable_element.hpp>
+#include <spar/core/model.hpp>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace spar::core {
+
+struct SlidingCableParameters {
+  double length = 1.0;             ///< L (m)
+  int elements = 5;                ///< N ≥ 3
+  RancfSection section;
+  double slider_position = 0.1;    ///< initial material coordinate of the sliding node (m)
+  double slider_mass = 1.0;        ///< lumped mass (kg)
+  bool rational = true;            ///< ALE-RANCF merges (least-squares weights) or ALE-ANCF (k = 1)
+  int quadrature_points = 5;
+};
+
+/// One length-control event.
+struct LengthControlEvent {
+  double time = 0.0;
+  std::string description;
+  Eigen::Vector4d split_weights_far;   ///< the new fixed-length element (normalized, w3 = 1)
+  Eigen::Vector4d split_weights_near;  ///< the new ALE element next to the sliding node
+  Eigen::Vector4d merged_weights;      ///< the merged ALE element (k0, k1, k2, 1)
+  bool merge_fallback = false;         ///< 000 eq. (38) fell back to k = 1
+  double merge_miss = 0.0;             ///< |r̄(ū_H) − r_H| of the merged element
+};
+
+template <int Dim>
+class SlidingCable {
+public:
+  /// Adds the cable's blocks and elements to `model` (straight along +X from the origin) and the
+  /// point mass; fixes the material coordinates of all nodes but the sliding one. Throws
+  /// spar::Error for N < 3 or a slider not strictly inside the cable.
+  SlidingCable(Model& model, const SlidingCableParameters& parameters);
+
+  /// Node blocks [r, r_x] in order along the cable (changes at events).
+  const std::vector<int>& chain() const { return chain_; }
+  /// Material-coordinate blocks, parallel to chain().
+  const std::vector<int>& materials() const { return materials_; }
+  /// Position of the sliding node in chain().
+  int slider() const { return slider_; }
+  double standard_length() const { return standard_length_; }
+  /// The reference length of element k (between chain()[k] and chain()[k + 1]).
+  double element_length(const Configuration& q, int k) const;
+  /// The weights of element k.
+  const Eigen::Vector4d& weights(int k) const { return weights_[k]; }
+  /// The global dofs to fix: the material coordinates of every node but the sliding one.
+  std::vector<int> fixed_material_dofs(const Configuration& q) const;
+
+  /// Inserts/deletes nodes when an element next to the sliding node exceeds 1.5 L_std and a node
+  /// can be deleted on the other side; returns the event and sets P (new × old dofs) for
+  /// GeneralizedAlpha::remap, or returns nothing. P maps accelerations by J too, without the
+  /// convective term J̇ q̇ of the split (docs/rancf.md eq. R23).
+  std::optional<LengthControlEvent> control_length(Model& model, double time, Eigen::MatrixXd& P);
+
+private:
+  std::unique_ptr<Element> make_element(int k, bool ale) const;
+
+  SlidingCableParameters parameters_;
+  double standard_length_ = 0.0;
+  std::vector<int> chain_, materials_, element_index_;
+  std::vector<Eigen::Vector4d> weights_;
+  std::vector<double> fixed_lengths_;
+  int slider_ = 0;
+};
+
+extern template class SlidingCable<2>;
+extern template class SlidingCable<3>;
+
+}  // namespace spar::core
