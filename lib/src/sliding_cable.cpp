@@ -4,6 +4,7 @@
 #include <spar/core/elements/rancf_merging.hpp>
 #include <spar/core/elements/rancf_segmentation.hpp>
 #include <spar/error.hpp>
+#include <spar/iga/quadrature.hpp>
 #include <spar/iga/rational_bezier.hpp>
 
 #include <algorithm>
@@ -72,6 +73,39 @@ std::unique_ptr<Element> SlidingCable<Dim>::make_element(int k, bool ale) const 
 template <int Dim>
 double SlidingCable<Dim>::element_length(const Configuration& q, int k) const {
   return q.vector(materials_[k + 1])(0) - q.vector(materials_[k])(0);
+}
+
+template <int Dim>
+Eigen::MatrixXd SlidingCable<Dim>::sample_centerline(const Configuration& q, int per_element) const {
+  const int N = static_cast<int>(weights_.size());
+  Eigen::MatrixXd points = Eigen::MatrixXd::Zero(N * per_element + 1, 3);
+  for (int k = 0; k < N; ++k)
+    for (int j = 0; j <= per_element; ++j) {
+      if (j == per_element && k + 1 < N) continue;
+      const Eigen::Vector4d s = iga::rancf_shape_functions(static_cast<double>(j) / per_element, weights_[k],
+                                                           element_length(q, k));
+      const auto a = q.vector(chain_[k]), b = q.vector(chain_[k + 1]);
+      points.row(k * per_element + j).head<Dim>() =
+          (s(0) * a.head(Dim) + s(1) * a.tail(Dim) + s(2) * b.head(Dim) + s(3) * b.tail(Dim)).transpose();
+    }
+  return points;
+}
+
+template <int Dim>
+double SlidingCable<Dim>::deformed_length(const Configuration& q) const {
+  const iga::GaussRule rule = iga::gauss_legendre(8);
+  double total = 0.0;
+  for (int k = 0; k < static_cast<int>(weights_.size()); ++k) {
+    const double l = element_length(q, k);
+    const auto a = q.vector(chain_[k]), b = q.vector(chain_[k + 1]);
+    for (std::size_t g = 0; g < rule.points.size(); ++g) {
+      const Eigen::Matrix4d sh = iga::rancf_shape_function_derivatives(0.5 * (rule.points[g] + 1.0), weights_[k]);
+      const Eigen::Matrix<double, Dim, 1> r_u =
+          sh(0, 1) * a.head(Dim) + l * sh(1, 1) * a.tail(Dim) + sh(2, 1) * b.head(Dim) + l * sh(3, 1) * b.tail(Dim);
+      total += 0.5 * rule.weights[g] * r_u.norm();  // ∫ |r_x| dx = ∫₀¹ |r_u| du
+    }
+  }
+  return total;
 }
 
 template <int Dim>

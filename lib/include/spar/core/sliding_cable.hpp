@@ -75,6 +75,11 @@ public:
   double element_length(const Configuration& q, int k) const;
   /// The weights of element k.
   const Eigen::Vector4d& weights(int k) const { return weights_[k]; }
+  /// The centreline: `per_element` points per element plus the last end, (N·per_element + 1) × 3
+  /// (z = 0 in 2D), along the cable.
+  Eigen::MatrixXd sample_centerline(const Configuration& q, int per_element) const;
+  /// The deformed length Σ ∫ |r_x| dx (8 Gauss points per element).
+  double deformed_length(const Configuration& q) const;
   /// The global dofs to fix: the material coordinates of every node but the sliding one.
   std::vector<int> fixed_material_dofs(const Configuration& q) const;
 
