@@ -57,7 +57,7 @@ int main(int argc, char** argv) try {
                                       .slider_position = 0.1, .slider_mass = 5.0,
                                       .rational = kind == "ale-rancf"});
   model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
-  std::vector<int> fixed = cable.fixed_material_dofs(model.state());
+  std::vector<int> fixed = cable.fixed_dofs(model.state());
   for (int end : {cable.chain().front(), cable.chain().back()})
     for (int i = 0; i < 2; ++i) fixed.push_back(model.state().blocks[end].offset + i);
   std::sort(fixed.begin(), fixed.end());

@@ -48,8 +48,9 @@ SlidingCable<Dim>::SlidingCable(Model& model, const SlidingCableParameters& para
     fixed_lengths_[k] = xs[k + 1] - xs[k];
     element_index_.push_back(model.add_element(make_element(k, k == slider_ - 1 || k == slider_)));
   }
-  model.add_element(std::make_unique<PointMassElement>(PointMassParameters{
+  mass_element_ = model.add_element(std::make_unique<PointMassElement>(PointMassParameters{
       .block = chain_[slider_], .dimension = Dim, .mass = parameters_.slider_mass, .name = "sliding mass"}));
+  if (parameters_.detachable) particle_ = model.add_vector(Eigen::VectorXd::Zero(Dim));
 }
 
 template <int Dim>
@@ -109,16 +110,92 @@ double SlidingCable<Dim>::deformed_length(const Configuration& q) const {
 }
 
 template <int Dim>
-std::vector<int> SlidingCable<Dim>::fixed_material_dofs(const Configuration& q) const {
+std::vector<int> SlidingCable<Dim>::fixed_dofs(const Configuration& q) const {
   std::vector<int> dofs;
   for (std::size_t i = 0; i < materials_.size(); ++i)
-    if (static_cast<int>(i) != slider_) dofs.push_back(q.blocks[materials_[i]].offset);
+    if (released_ || static_cast<int>(i) != slider_) dofs.push_back(q.blocks[materials_[i]].offset);
+  if (particle_ >= 0 && !released_)
+    for (int i = 0; i < Dim; ++i) dofs.push_back(q.blocks[particle_].offset + i);
+  if (released_) {
+    for (int i = 0; i < 2 * Dim; ++i) dofs.push_back(q.blocks[dead_node_].offset + i);
+    dofs.push_back(q.blocks[dead_material_].offset);
+  }
+  std::sort(dofs.begin(), dofs.end());
   return dofs;
+}
+
+template <int Dim>
+bool SlidingCable<Dim>::near_end(const Configuration& q, int end, double min_length) const {
+  const int last = static_cast<int>(chain_.size()) - 1;
+  if (released_) return false;
+  if (end == last && slider_ + 1 == last) return element_length(q, slider_) < min_length;
+  if (end == 0 && slider_ - 1 == 0) return element_length(q, 0) < min_length;
+  return false;
+}
+
+template <int Dim>
+void SlidingCable<Dim>::release(Model& model, Eigen::MatrixXd& P) {
+  constexpr const char* where = "core::SlidingCable::release";
+  const int s = slider_, last = static_cast<int>(chain_.size()) - 1;
+  if (particle_ < 0 || released_)
+    throw Error(particle_ < 0 ? "no particle block reserved" : "the mass has already left", where,
+                "build the cable with detachable = true and release once");
+  if (s + 1 != last && s - 1 != 0)
+    throw Error("the sliding node is not next to an end element", where, "release at a free end");
+  Configuration& q = model.state();
+  // The sliding node S becomes the cable's end: the short end element (S to the old end node E)
+  // is removed with its material, E's blocks are fixed from then on, and the inner element keeps
+  // its weights and its current length (fixed). S is held at its material point: its rates are
+  // the material velocity and slope rate there (eq. R30 at the inner element's end, ẋ_g = ẋ_S).
+  // The mass becomes a particle at r_S with velocity ṙ_S.
+  const bool right = s + 1 == last;
+  const int k_inner = right ? s - 1 : s, k_end = right ? s : s - 1, end = right ? last : 0;
+  const double u_node = right ? 1.0 : 0.0, l = element_length(q, k_inner);
+  const auto a = q.vector(chain_[k_inner]), b = q.vector(chain_[k_inner + 1]);
+  const Eigen::Matrix4d sh = iga::rancf_shape_function_derivatives(u_node, weights_[k_inner]);
+  const Eigen::Matrix<double, Dim, 1> r_uu =
+      sh(0, 2) * a.head(Dim) + l * sh(1, 2) * a.tail(Dim) + sh(2, 2) * b.head(Dim) + l * sh(3, 2) * b.tail(Dim);
+  const Eigen::Matrix<double, Dim, 1> r_x = q.vector(chain_[s]).template tail<Dim>();
+  const int n = q.dof_count();
+  const int node = q.blocks[chain_[s]].offset, x = q.blocks[materials_[s]].offset, p = q.blocks[particle_].offset;
+  const int dead = q.blocks[chain_[end]].offset, dead_x = q.blocks[materials_[end]].offset;
+  P = Eigen::MatrixXd::Identity(n, n);
+  for (int i = 0; i < Dim; ++i) {
+    P.row(p + i).setZero();
+    P(p + i, node + i) = 1.0;
+    P(node + i, x) = -r_x(i);
+    P(node + Dim + i, x) = -r_uu(i) / (l * l);
+  }
+  P.row(x).setZero();
+  for (int i = 0; i < 2 * Dim; ++i) P.row(dead + i).setZero();
+  P.row(dead_x).setZero();
+  q.vector(particle_) = q.vector(chain_[s]).template head<Dim>();
+  model.replace_element(mass_element_, std::make_unique<PointMassElement>(PointMassParameters{
+                                           .block = particle_, .dimension = Dim,
+                                           .mass = parameters_.slider_mass, .name = "released mass"}));
+  const int removed = element_index_[k_end];
+  model.remove_element(removed);
+  for (int& index : element_index_)
+    if (index > removed) --index;
+  if (mass_element_ > removed) --mass_element_;
+  dead_node_ = chain_[end];
+  dead_material_ = materials_[end];
+  chain_.erase(chain_.begin() + end);
+  materials_.erase(materials_.begin() + end);
+  element_index_.erase(element_index_.begin() + k_end);
+  weights_.erase(weights_.begin() + k_end);
+  fixed_lengths_.erase(fixed_lengths_.begin() + k_end);
+  const int k_kept = right ? k_inner : k_inner - 1;
+  fixed_lengths_[k_kept] = l;
+  released_ = true;
+  slider_ = -1;
+  model.replace_element(element_index_[k_kept], make_element(k_kept, false));
 }
 
 template <int Dim>
 std::optional<LengthControlEvent> SlidingCable<Dim>::control_length(Model& model, double time,
                                                                      Eigen::MatrixXd& P) {
+  if (released_) return std::nullopt;
   Configuration& q = model.state();
   const int s = slider_, last = static_cast<int>(chain_.size()) - 1;
   const double limit = 1.5 * standard_length_;

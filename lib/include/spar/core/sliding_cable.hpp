@@ -43,6 +43,8 @@ struct SlidingCableParameters {
   double slider_mass = 1.0;        ///< lumped mass (kg)
   bool rational = true;            ///< ALE-RANCF merges (least-squares weights) or ALE-ANCF (k = 1)
   int quadrature_points = 5;
+  /// Reserve a free-particle block for the mass to leave the cable at a free end (release()).
+  bool detachable = false;
 };
 
 /// One length-control event.
@@ -68,7 +70,7 @@ public:
   const std::vector<int>& chain() const { return chain_; }
   /// Material-coordinate blocks, parallel to chain().
   const std::vector<int>& materials() const { return materials_; }
-  /// Position of the sliding node in chain().
+  /// Position of the sliding node in chain() (−1 once the mass has left).
   int slider() const { return slider_; }
   double standard_length() const { return standard_length_; }
   /// The reference length of element k (between chain()[k] and chain()[k + 1]).
@@ -80,8 +82,26 @@ public:
   Eigen::MatrixXd sample_centerline(const Configuration& q, int per_element) const;
   /// The deformed length Σ ∫ |r_x| dx (8 Gauss points per element).
   double deformed_length(const Configuration& q) const;
-  /// The global dofs to fix: the material coordinates of every node but the sliding one.
-  std::vector<int> fixed_material_dofs(const Configuration& q) const;
+  /// The global dofs to fix (the supports are the caller's): the material coordinates of every
+  /// node but the sliding one (after release(): of every node) and, while the mass is on the
+  /// cable, the reserved particle block.
+  std::vector<int> fixed_dofs(const Configuration& q) const;
+
+  /// The particle block (Dim entries) reserved for the released mass, or −1.
+  int particle() const { return particle_; }
+  bool released() const { return released_; }
+  /// Whether the sliding node is next to the end element at `end` (0 or chain().size() − 1) and
+  /// that element is shorter than `min_length`.
+  bool near_end(const Configuration& q, int end, double min_length) const;
+  /// The mass leaves the cable (docs/rancf.md, "Release"): it becomes a free particle with the
+  /// sliding node's position and velocity; the sliding node becomes the cable's end — the short
+  /// element beyond it is removed from the model with its material, the old end node's blocks are
+  /// fixed from then on, the inner element keeps its weights and current length — and is held at
+  /// its material point (rates: the material velocity and slope rate there). The chain loses one
+  /// node. Sets P (new × old dofs) for GeneralizedAlpha::remap; the caller then refixes the dofs
+  /// (fixed_dofs) and restarts the accelerations. Throws spar::Error without a reserved particle
+  /// block, twice, or when the slider is not next to an end element.
+  void release(Model& model, Eigen::MatrixXd& P);
 
   /// Inserts/deletes nodes when an element next to the sliding node exceeds 1.5 L_std and a node
   /// can be deleted on the other side; returns the event and sets P (new × old dofs) for
@@ -98,6 +118,10 @@ private:
   std::vector<Eigen::Vector4d> weights_;
   std::vector<double> fixed_lengths_;
   int slider_ = 0;
+  int particle_ = -1;
+  int mass_element_ = -1;
+  bool released_ = false;
+  int dead_node_ = -1, dead_material_ = -1;  ///< the sliding node's blocks after release()
 };
 
 extern template class SlidingCable<2>;
