@@ -197,11 +197,14 @@ int main(int argc, char** argv) try {
   for (double d : deviations) max_deviation = std::max(max_deviation, std::fabs(d));
 
   // 5. The event log and the weight statistics (000 Table 2: k_i of the merged elements).
-  Eigen::MatrixXd log(static_cast<Eigen::Index>(events.size()), 15);
+  // One row per event: time, split element, its weights before, the two merged elements' weights
+  // before (next to the slider, beyond), the new far/near/merged weights, fallback, miss.
+  Eigen::MatrixXd log(static_cast<Eigen::Index>(events.size()), 28);
   std::vector<double> weight_set;
   for (std::size_t i = 0; i < events.size(); ++i) {
     const core::LengthControlEvent& e = events[i];
-    log.row(static_cast<Eigen::Index>(i)) << e.time, e.split_weights_far.transpose(),
+    log.row(static_cast<Eigen::Index>(i)) << e.time, e.grown_element, e.grown_weights.transpose(),
+        e.merged_near_weights.transpose(), e.merged_far_weights.transpose(), e.split_weights_far.transpose(),
         e.split_weights_near.transpose(), e.merged_weights.transpose(), e.merge_fallback ? 1.0 : 0.0, e.merge_miss;
     for (int j = 0; j < 3; ++j) weight_set.push_back(e.merged_weights(j));
   }

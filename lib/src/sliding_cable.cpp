@@ -224,6 +224,10 @@ std::optional<LengthControlEvent> SlidingCable<Dim>::control_length(Model& model
   const Eigen::Matrix<double, Dim, 1> r_d = q.vector(chain_[deleted]).template head<Dim>();
   LengthControlEvent event;
   event.time = time;
+  event.grown_element = k_grow;
+  event.grown_weights = weights_[k_grow];
+  event.merged_near_weights = weights_[d == 1 ? s : s - 1];
+  event.merged_far_weights = weights_[d == 1 ? s + 1 : s - 2];
   if (parameters_.rational) {
     const RancfMergeWeights merged = merge_rancf_weights<Dim>(
         e_merged, r_d, q.vector(materials_[m_a])(0), q.vector(materials_[deleted])(0),

@@ -51,6 +51,10 @@ struct SlidingCableParameters {
 struct LengthControlEvent {
   double time = 0.0;
   std::string description;
+  int grown_element = -1;              ///< index (along the chain) of the element that was split
+  Eigen::Vector4d grown_weights;       ///< its weights before the split
+  Eigen::Vector4d merged_near_weights; ///< before the merge: the element next to the slider
+  Eigen::Vector4d merged_far_weights;  ///< before the merge: the element beyond the deleted node
   Eigen::Vector4d split_weights_far;   ///< the new fixed-length element (normalized, w3 = 1)
   Eigen::Vector4d split_weights_near;  ///< the new ALE element next to the sliding node
   Eigen::Vector4d merged_weights;      ///< the merged ALE element (k0, k1, k2, 1)
