@@ -15,7 +15,7 @@
 //   node carries the mass; the two elements next to it are ALE, the others fixed length; when one
 //   of them passes 1.5 L_std a node is inserted (exact) and the node beyond the other one deleted
 //   (merge: least-squares weights for ALE-RANCF, unit weights for ALE-ANCF). When the element
-//   between the mass and the free end is shorter than 0.05 L_std (or than two steps of its travel)
+//   between the mass and the free end is shorter than 0.05 L_std (or than four steps of its travel)
 //   the mass leaves the beam and flies
 //   on as a free particle (core::SlidingCable::release). After each event the integrator restarts
 //   its accelerations. Written every step: the energies, the right end, the slider (or the free
@@ -155,11 +155,11 @@ int main(int argc, char** argv) try {
                   event->description.c_str(), event->merged_weights(0), event->merged_weights(1),
                   event->merged_weights(2), event->merge_fallback ? " (fallback k = 1)" : "");
     }
-    // Departure: the element to the free end is shorter than 0.05 L_std, or than two steps of
+    // Departure: the element to the free end is shorter than 0.05 L_std, or than four steps of
     // the slider's travel (it would vanish within the next steps).
     const double slider_rate =
         cable.released() ? 0.0 : integrator.velocity()(model.state().blocks[cable.materials()[cable.slider()]].offset);
-    const double min_length = std::max(0.05 * cable.standard_length(), 2 * h * std::fabs(slider_rate));
+    const double min_length = std::max(0.05 * cable.standard_length(), 4 * h * std::fabs(slider_rate));
     if (!cable.released() && cable.near_end(model.state(), 0, min_length)) {
       // The mass has slid back to the clamp: a collision this model does not have. Stop here.
       support_time = integrator.time();
