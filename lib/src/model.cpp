@@ -57,6 +57,14 @@ void Model::replace_element(int i, std::unique_ptr<Element> element) {
   ++structure_version_;
 }
 
+void Model::remove_element(int i) {
+  if (i < 0 || i >= element_count())
+    throw Error("element " + std::to_string(i) + " does not exist", "core::Model::remove_element",
+                "use an index returned by add_element");
+  elements_.erase(elements_.begin() + i);
+  ++structure_version_;
+}
+
 int Model::add_beam(const BeamParameters& parameters) {
   beams_.push_back(std::make_unique<GeometricallyExactBeam>(parameters, state_));
   ++structure_version_;

@@ -196,12 +196,14 @@ struct GeneralizedAlpha::Implementation {
   // Initial conditions ---------------------------------------------------------------------------
 
   /// M v̇₀ + Bᵀλ₀ = −(f_qv + f_int − f_ext), B v̇₀ = −c(q₀, v₀, 0).
+  /// The first call starts the run (and its energy balance); a later one restarts the method from
+  /// consistent accelerations at the current state, the balance carrying on.
   void initialize() {
     consistent_accelerations();
     if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
-    // The balance starts here: energies and forces at t = 0 with the consistent accelerations.
     evaluate(t, nullptr, 1.0);
-    initial_energy = mechanical_energy();
+    // The balance starts at t = 0 with the consistent accelerations.
+    if (!initialized) initial_energy = mechanical_energy();
     last_work_force = work_force();
     initialized = true;
   }

@@ -130,3 +130,21 @@ TEST_CASE("invalid rational Béziers raise spar::Error naming the problem", "[ig
   CHECK_THROWS_WITH(rancf_from_bezier(quadratic, 1.0), Contains("degree 2"));
   CHECK_THROWS_WITH(quadratic.point(1.5), Contains("outside"));
 }
+
+TEST_CASE("rancf_shape_function_derivatives: values and three derivatives", "[iga][rancf]") {
+  // Column 0 is rancf_shape_functions with s_2, s_4 divided by l; columns 1 … 3 against central
+  // differences of the previous column (h = 1e-5: truncation ~1e-10 on O(10) third derivatives,
+  // round-off ~1e-11; 1e-7).
+  const Eigen::Vector4d w(1.0, 0.7, 1.3, 0.9);
+  const double l = 0.8, h = 1e-5;
+  for (double u : {1e-3, 0.27, 0.5, 0.93}) {
+    const Eigen::Matrix4d s = spar::iga::rancf_shape_function_derivatives(u, w);
+    const Eigen::Vector4d plain = spar::iga::rancf_shape_functions(u, w, l);
+    CHECK((s.col(0) - Eigen::Vector4d(plain(0), plain(1) / l, plain(2), plain(3) / l)).cwiseAbs().maxCoeff() <= 1e-15);
+    const Eigen::Matrix4d plus = spar::iga::rancf_shape_function_derivatives(u + h, w);
+    const Eigen::Matrix4d minus = spar::iga::rancf_shape_function_derivatives(u - h, w);
+    for (int d = 1; d <= 3; ++d)
+      CHECK((s.col(d) - (plus.col(d - 1) - minus.col(d - 1)) / (2 * h)).cwiseAbs().maxCoeff() <=
+            1e-7 * std::max(1.0, s.col(d).cwiseAbs().maxCoeff()));
+  }
+}

@@ -167,4 +167,35 @@ inline Eigen::Vector4d rancf_shape_functions(double u, const Eigen::Vector4d& w,
          W;
 }
 
+/// The RANCF shape functions of 000 eq. (9) and their first three derivatives in u, with the
+/// length factor taken out of s_2 and s_4: column d (= 0 … 3) holds d^d/du^d of
+/// [s_1, s_2/l, s_3, s_4/l], so that r^(d)(u) = s_1^(d) r_A + l (s_2/l)^(d) r_x^A + s_3^(d) r_B
+/// + l (s_4/l)^(d) r_x^B. With the cubic Bernstein-like monomials b = [u³, u²v, uv², v³],
+/// v = 1 − u, each numerator n_k and W are combinations of b, and the quotient rule gives
+/// s' = (n' − s W')/W, s'' = (n'' − 2 s' W' − s W'')/W and
+/// s''' = (n''' − 3 s'' W' − 3 s' W'' − s W''')/W. Weights are not checked (hot path).
+inline Eigen::Matrix<double, 4, 4> rancf_shape_function_derivatives(double u,
+                                                                    const Eigen::Vector4d& w) {
+  const double v = 1.0 - u;
+  Eigen::Matrix<double, 4, 4> b;  // rows: u³, u²v, uv², v³; columns: value and d/du … d³/du³
+  b << u * u * u, 3 * u * u, 6 * u, 6,
+      u * u * v, 2 * u * v - u * u, 2 * v - 4 * u, -6,
+      u * v * v, v * v - 2 * u * v, 2 * u - 4 * v, 6,
+      v * v * v, -3 * v * v, 6 * v, -6;
+  Eigen::Matrix<double, 4, 4> numerators;  // rows: n_1, n_2/l, n_3, n_4/l over b
+  numerators << 0, 0, 3 * w(1), w(0),
+      0, 0, w(0), 0,
+      w(3), 3 * w(2), 0, 0,
+      0, -w(3), 0, 0;
+  const Eigen::RowVector4d denominator(w(3), 3 * w(2), 3 * w(1), w(0));
+  const Eigen::Matrix<double, 4, 4> n = numerators * b;
+  const Eigen::RowVector4d W = denominator * b;
+  Eigen::Matrix<double, 4, 4> s;
+  s.col(0) = n.col(0) / W(0);
+  s.col(1) = (n.col(1) - s.col(0) * W(1)) / W(0);
+  s.col(2) = (n.col(2) - 2 * s.col(1) * W(1) - s.col(0) * W(2)) / W(0);
+  s.col(3) = (n.col(3) - 3 * s.col(2) * W(1) - 3 * s.col(1) * W(2) - s.col(0) * W(3)) / W(0);
+  return s;
+}
+
 }  // namespace spar::iga

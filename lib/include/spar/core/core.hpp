@@ -14,6 +14,10 @@
 #include <spar/core/elements/ancf_beam_element.hpp>
 #include <spar/core/elements/geometrically_exact_beam_element.hpp>
 #include <spar/core/elements/load_elements.hpp>
+#include <spar/core/elements/point_mass_element.hpp>
+#include <spar/core/elements/rancf_cable_element.hpp>
+#include <spar/core/elements/rancf_merging.hpp>
+#include <spar/core/elements/rancf_segmentation.hpp>
 #include <spar/core/elements/rigid_body_element.hpp>
 #include <spar/core/elements/vector_load_element.hpp>
 #include <spar/core/hdf5_file.hpp>
@@ -23,4 +27,5 @@
 #include <spar/core/progress_bar.hpp>
 #include <spar/core/results_writer.hpp>
 #include <spar/core/section_integrals.hpp>
+#include <spar/core/sliding_cable.hpp>
 #include <spar/core/sparse_assembly.hpp>

@@ -63,6 +63,10 @@ public:
   /// Replaces element i (a slider crossing into the next element, a re-cut mesh) and marks the
   /// structure changed.
   void replace_element(int i, std::unique_ptr<Element> element);
+  /// Removes element i (a piece of a cable that a leaving mass takes with it, a merged element);
+  /// the elements after it move down by one index. Marks the structure changed. Throws
+  /// spar::Error for an index that does not exist.
+  void remove_element(int i);
 
   /// Adds a beam: its control points become frame blocks, each knot span a
   /// GeometricallyExactBeamElement. Returns the beam's index.

@@ -108,7 +108,10 @@ public:
   /// Sets any block's initial velocity (before the first step), in the block's tangent layout.
   void set_velocity(int block, const Eigen::VectorXd& velocity);
   /// Computes consistent initial accelerations and multipliers from M v̇ + Bᵀλ = −f and
-  /// B v̇ = −c. Done by the first step() if not called.
+  /// B v̇ = −c. Done by the first step() if not called. Called again during a run (after a remap
+  /// whose map P does not carry the accelerations, e.g. an ALE re-mesh), it restarts the method
+  /// from consistent accelerations at the current state; the energy balance carries on, and a
+  /// jump of the energy at the re-mesh shows in the numerical dissipation.
   void initialize();
   /// Advances by one time step (in halves, recursively, if Newton fails). Throws spar::Error
   /// naming the step, the time and the likely cause when even max_cutbacks halvings fail; the

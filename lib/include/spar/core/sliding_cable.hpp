@@ -1,0 +1,134 @@
+#pragma once
+/// \file
+/// A cable with a sliding node and element length control (paper 000 §5; docs/rancf.md,
+/// "Sliding node and length control").
+///
+/// The cable lies straight along +X from the origin. Every node is a vector block [r, r_x]; every
+/// node has a scalar material-coordinate block, fixed (a Dirichlet dof) except at the sliding node.
+/// The two elements next to the sliding node are ALE-RANCF, the others fixed-length RANCF; a point
+/// mass on the sliding node is the lumped mass sliding without friction. The slope is continuous
+/// across the sliding node (000 eq. (40), first case: one r_x per node, no constraint).
+///
+/// Initial mesh: elements of L_std = L/N, except that one interior node is left out so that the
+/// two elements next to the sliding node span 2 L_std together; that sum is kept by every length
+/// control event, so after the first event every element stays in [0.5, 1.5] L_std.
+///
+/// Length control (000 §5, Figure 7): when an element next to the sliding node exceeds
+/// 1.5 L_std, a node H is inserted in it (de Casteljau, exact) so that the element away from the
+/// sliding node is L_std, and the node next to the sliding node on the other side is deleted
+/// (merge, least-squares weights or unit weights for ALE-ANCF). The node count and the block
+/// layout stay the same: the deleted node's blocks are reused for H. Rates are carried by the map
+/// P (new dofs × old dofs) for GeneralizedAlpha::remap: on H's rows the material velocity and
+/// slope rate at x_H (RancfSplit::material_jacobian; H's material coordinate is fixed from then
+/// on), the identity elsewhere (the merge keeps A's and B's rates). The caller then restarts the
+/// accelerations (GeneralizedAlpha::initialize): the merged system's are not the mapped ones.
+
+#include <spar/core/elements/rancf_cable_element.hpp>
+#include <spar/core/model.hpp>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace spar::core {
+
+struct SlidingCableParameters {
+  double length = 1.0;             ///< L (m)
+  int elements = 5;                ///< N ≥ 3
+  RancfSection section;
+  double slider_position = 0.1;    ///< initial material coordinate of the sliding node (m)
+  double slider_mass = 1.0;        ///< lumped mass (kg)
+  bool rational = true;            ///< ALE-RANCF merges (least-squares weights) or ALE-ANCF (k = 1)
+  int quadrature_points = 5;
+  /// Reserve a free-particle block for the mass to leave the cable at a free end (release()).
+  bool detachable = false;
+};
+
+/// One length-control event.
+struct LengthControlEvent {
+  double time = 0.0;
+  std::string description;
+  int grown_element = -1;              ///< index (along the chain) of the element that was split
+  Eigen::Vector4d grown_weights;       ///< its weights before the split
+  Eigen::Vector4d merged_near_weights; ///< before the merge: the element next to the slider
+  Eigen::Vector4d merged_far_weights;  ///< before the merge: the element beyond the deleted node
+  Eigen::Vector4d split_weights_far;   ///< the new fixed-length element (normalized, w3 = 1)
+  Eigen::Vector4d split_weights_near;  ///< the new ALE element next to the sliding node
+  Eigen::Vector4d merged_weights;      ///< the merged ALE element (k0, k1, k2, 1)
+  bool merge_fallback = false;         ///< 000 eq. (38) fell back to k = 1
+  double merge_miss = 0.0;             ///< |r̄(ū_H) − r_H| of the merged element
+};
+
+template <int Dim>
+class SlidingCable {
+public:
+  /// Adds the cable's blocks and elements to `model` (straight along +X from the origin) and the
+  /// point mass; fixes the material coordinates of all nodes but the sliding one. Throws
+  /// spar::Error for N < 3 or a slider not strictly inside the cable.
+  SlidingCable(Model& model, const SlidingCableParameters& parameters);
+
+  /// Node blocks [r, r_x] in order along the cable (changes at events).
+  const std::vector<int>& chain() const { return chain_; }
+  /// Material-coordinate blocks, parallel to chain().
+  const std::vector<int>& materials() const { return materials_; }
+  /// Position of the sliding node in chain() (−1 once the mass has left).
+  int slider() const { return slider_; }
+  double standard_length() const { return standard_length_; }
+  /// The reference length of element k (between chain()[k] and chain()[k + 1]).
+  double element_length(const Configuration& q, int k) const;
+  /// The weights of element k.
+  const Eigen::Vector4d& weights(int k) const { return weights_[k]; }
+  /// The centreline: `per_element` points per element plus the last end, (N·per_element + 1) × 3
+  /// (z = 0 in 2D), along the cable.
+  Eigen::MatrixXd sample_centerline(const Configuration& q, int per_element) const;
+  /// The deformed length Σ ∫ |r_x| dx (8 Gauss points per element).
+  double deformed_length(const Configuration& q) const;
+  /// The global dofs to fix (the supports are the caller's): the material coordinates of every
+  /// node but the sliding one (after release(): of every node) and, while the mass is on the
+  /// cable, the reserved particle block.
+  std::vector<int> fixed_dofs(const Configuration& q) const;
+
+  /// The particle block (Dim entries) reserved for the released mass, or −1.
+  int particle() const { return particle_; }
+  bool released() const { return released_; }
+  /// Whether the sliding node is next to the end element at `end` (0 or chain().size() − 1) and
+  /// that element is shorter than `min_length`.
+  bool near_end(const Configuration& q, int end, double min_length) const;
+  /// The mass leaves the cable (docs/rancf.md, "Release"): it becomes a free particle with the
+  /// sliding node's position and velocity; the sliding node becomes the cable's end — the short
+  /// element beyond it is removed from the model with its material, the old end node's blocks are
+  /// fixed from then on, the inner element keeps its weights and current length — and is held at
+  /// its material point (rates: the material velocity and slope rate there). The chain loses one
+  /// node. Sets P (new × old dofs) for GeneralizedAlpha::remap; the caller then refixes the dofs
+  /// (fixed_dofs) and restarts the accelerations. Throws spar::Error without a reserved particle
+  /// block, twice, or when the slider is not next to an end element.
+  void release(Model& model, Eigen::MatrixXd& P);
+
+  /// Inserts/deletes nodes when an element next to the sliding node exceeds 1.5 L_std and a node
+  /// can be deleted on the other side; returns the event and sets P (new × old dofs) for
+  /// GeneralizedAlpha::remap, or returns nothing. P maps accelerations by J too, without the
+  /// convective term J̇ q̇ of the split (docs/rancf.md eq. R23).
+  std::optional<LengthControlEvent> control_length(Model& model, double time, Eigen::MatrixXd& P);
+
+private:
+  std::unique_ptr<Element> make_element(int k, bool ale) const;
+
+  SlidingCableParameters parameters_;
+  double standard_length_ = 0.0;
+  std::vector<int> chain_, materials_, element_index_;
+  std::vector<Eigen::Vector4d> weights_;
+  std::vector<double> fixed_lengths_;
+  int slider_ = 0;
+  int particle_ = -1;
+  int mass_element_ = -1;
+  bool released_ = false;
+  int dead_node_ = -1, dead_material_ = -1;  ///< the sliding node's blocks after release()
+};
+
+extern template class SlidingCable<2>;
+extern template class SlidingCable<3>;
+
+}  // namespace spar::core
