@@ -37,7 +37,8 @@ void check_point(core::AncfElementKind kind) {
   // The literal S(x, y, z) e of 001 on element 1.
   const auto S = test::literal_shape<transverse>(xi * beam.element_length, yz.x(), yz.y(), beam.element_length);
   Eigen::VectorXd e(3 * S.size());
-  e << q.vector(beam.nodes[1]), q.vector(beam.nodes[2]);
+  e.head<12>() = q.vector(beam.nodes[1]);
+  e.segment<12>(12) = q.vector(beam.nodes[2]);
   if constexpr (transverse == 3) e.tail<6>() = q.vector(beam.element_blocks[1]);
   Eigen::Vector3d literal = Eigen::Vector3d::Zero();
   for (std::size_t k = 0; k < S.size(); ++k) literal += S[k] * e.segment<3>(3 * static_cast<Eigen::Index>(k));
