@@ -23,6 +23,7 @@
 #include <spar/spar.hpp>
 
 #include <cli.hpp>
+#include <length_control_report.hpp>
 #include <energy_balance.hpp>
 
 #include <algorithm>
@@ -207,40 +208,20 @@ int main(int argc, char** argv) try {
   for (double d : deviations) max_deviation = std::max(max_deviation, std::fabs(d));
 
   // 5. The event log and the weight statistics (000 Table 2: k_i of the merged elements).
-  // One row per event: time, split element, its weights before, the two merged elements' weights
-  // before (next to the slider, beyond), the new far/near/merged weights, fallback, miss.
-  Eigen::MatrixXd log(static_cast<Eigen::Index>(events.size()), 28);
-  std::vector<double> weight_set;
-  for (std::size_t i = 0; i < events.size(); ++i) {
-    const core::LengthControlEvent& e = events[i];
-    log.row(static_cast<Eigen::Index>(i)) << e.time, e.grown_element, e.grown_weights.transpose(),
-        e.merged_near_weights.transpose(), e.merged_far_weights.transpose(), e.split_weights_far.transpose(),
-        e.split_weights_near.transpose(), e.merged_weights.transpose(), e.merge_fallback ? 1.0 : 0.0, e.merge_miss;
-    for (int j = 0; j < 3; ++j) weight_set.push_back(e.merged_weights(j));
-  }
-  if (!events.empty())
-    results.write_constant("length_control_events", log, "s, 1",
-                           "one row per length-control event: time (s), the grown element, then the weights "
-                           "before and after (docs/rancf.md, the columns in the example's README)");
+  examples::write_length_control_log(results, events);
   results.close();
-  double k_max = 1.0, k_min = 1.0, sigma = 0.0;
-  if (!weight_set.empty()) {
-    k_max = *std::max_element(weight_set.begin(), weight_set.end());
-    k_min = *std::min_element(weight_set.begin(), weight_set.end());
-    for (double k : weight_set) sigma += (k - 1) * (k - 1);
-    sigma = std::sqrt(sigma / static_cast<double>(weight_set.size()));  // 000 eq. (42)
-  }
+  const examples::WeightStatistics weights = examples::weight_statistics(events);
 
   // 6. Report.
   const solvers::DynamicCounters& counters = integrator.counters();
   std::printf("falling_beam, %s, %d elements, h = %g s, rho_inf = %g, t = %g s: %ld steps, %ld Newton "
-              "iterations, %.3f s (length control %.4f s); %zu length-control events; slider at x = %.4f m; "
+              "iterations, %.3f s (length control %.4f s); %zu length-control events; "
               "energy: max |E - E0| %.3e, max drift between events %.3e, largest jump %.3e of the largest "
               "kinetic energy %.4f J; merged weights: set %zu, max %.3f, min %.3f, sigma %.3f; the mass left at t = %.4f s\n",
               kind.c_str(), elements, h, rho_infinity, integrator.time(), counters.steps,
               counters.newton_iterations, wall, control_seconds, events.size(),
               max_deviation / max_kinetic, max_segment_drift / max_kinetic, max_jump / max_kinetic, max_kinetic,
-              weight_set.size(), k_max, k_min, sigma, separation_time);
+              weights.count, weights.max, weights.min, weights.sigma, separation_time);
   examples::JsonSummary()
       .add("elements", elements).add("element_kind", kind).add("h", h).add("rho_inf", rho_infinity)
       .add("t_end", integrator.time())
@@ -250,8 +231,8 @@ int main(int argc, char** argv) try {
       .add("max_energy_drift", max_deviation / max_kinetic)
       .add("max_drift_between_events", max_segment_drift / max_kinetic)
       .add("max_merge_energy_jump", max_jump / max_kinetic)
-      .add("weight_set_size", static_cast<int>(weight_set.size()))
-      .add("weight_max", k_max).add("weight_min", k_min).add("weight_sigma", sigma)
+      .add("weight_set_size", static_cast<int>(weights.count))
+      .add("weight_max", weights.max).add("weight_min", weights.min).add("weight_sigma", weights.sigma)
       .add("separation_time", separation_time).add("support_reached_time", support_time)
       .add("steps", static_cast<int>(counters.steps))
       .add("newton_iterations", static_cast<int>(counters.newton_iterations))

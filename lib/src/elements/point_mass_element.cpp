@@ -26,14 +26,17 @@ void PointMassElement::evaluate(const ElementInput& in, const ElementRequest& re
                 parameters_.name, "put the point mass on a node's vector block");
   const double m = parameters_.mass;
   // Weight m g: potential −m g·r, residual −m g.
+  // (Entry by entry: d is 2 or 3, which GCC cannot see through a head(d) of a 3-vector.)
   const Eigen::Vector3d weight = in.load_factor * m * in.gravity;
-  if (request.residual) out.residual.head(d) -= weight.head(d);
-  out.energy.gravity = -weight.head(d).dot(q.vector(b).head(d));
+  for (int i = 0; i < d; ++i) {
+    if (request.residual) out.residual(i) -= weight(i);
+    if (request.energy) out.energy.gravity -= weight(i) * q.vector(b)(i);
+  }
   if (!in.dynamic()) return;
   const int offset = q.blocks[b].offset;
   if (request.residual) out.residual.head(d) += m * in.acceleration->segment(offset, d);
   if (request.mass) out.mass.topLeftCorner(d, d).diagonal().array() += m;
-  out.energy.kinetic = 0.5 * m * in.velocity->segment(offset, d).squaredNorm();
+  if (request.energy) out.energy.kinetic = 0.5 * m * in.velocity->segment(offset, d).squaredNorm();
 }
 
 }  // namespace spar::core
