@@ -115,9 +115,14 @@ void SystemAssembly::compute_element(int id, const core::ElementInput& in,
   else if (request.stiffness)
     core::apply_tangent_operator(*in.q, blocks, increment, w.output.stiffness);
   if (!K) return;
-  if (request.stiffness) *K += c->stiffness * w.output.stiffness;
-  if (request.mass) *K += c->mass * w.output.mass;
-  if (request.damping) *K += c->damping * w.output.damping;
+  // K arrives zeroed: the usual dynamic case is one fused pass over the three matrices.
+  if (request.stiffness && request.mass && request.damping)
+    K->noalias() = c->stiffness * w.output.stiffness + c->mass * w.output.mass + c->damping * w.output.damping;
+  else {
+    if (request.stiffness) *K += c->stiffness * w.output.stiffness;
+    if (request.mass) *K += c->mass * w.output.mass;
+    if (request.damping) *K += c->damping * w.output.damping;
+  }
   if (use_frozen && w.frozen_mass.size() > 0)
     // 003 §5.1: the rotation–rotation blocks J_θ stay those of t = 0.
     for_each_rotation_pair(*in.q, blocks, [&](Eigen::Index r, Eigen::Index s) {
