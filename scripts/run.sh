@@ -23,6 +23,9 @@ print(f"\nSummary: the flexible slider-crank of Wu et al. (2020, section 5.1) ra
       f"{r['jtheta_updates']} updates of J_theta, {r['cutbacks']} cut-back steps). Rod I reached "
       f"{r['max_rod1_speed']:.0f} rad/s (paper: over 320) and Rod II's deformation rate peaked at "
       f"{100 * r['max_rod2_deformation_rate']:.2f} % (paper: over 5 % at h = 1e-4); the joints held "
-      f"to {r['max_constraint_residual']:.1e} m. Time histories: results/slider_crank/slider_crank.h5 "
+      f"to {r['max_constraint_residual']:.1e} m. The drive did {r['external_work']:.0f} J of work and the "
+      f"integrator dissipated {r['numerical_dissipation']:.0f} J of it (rho_inf = 0.9; docs/dynamics.md D8)"
+      + (f"; the slider was at x = {r['slider_x_at_0_1']:.4f} m at t = 0.1 s" if r['slider_x_at_0_1'] is not None else "")
+      + f". Time histories: results/slider_crank/slider_crank.h5 "
       f"(open slider_crank.xmf in ParaView), slider_crank.csv; figure: slider_crank.png.")
 PY
