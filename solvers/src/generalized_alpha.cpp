@@ -80,8 +80,14 @@ struct GeneralizedAlpha::Implementation {
   double t = 0.0;
   Eigen::VectorXd velocity, acceleration, algorithmic_acceleration, lambda;
   bool initialized = false;
-  // Newton state of the current step.
-  core::Configuration start;
+  /// The integrator's state at the start of a step, restored when the step fails.
+  struct Snapshot {
+    core::Configuration q;
+    Eigen::VectorXd velocity, acceleration, algorithmic_acceleration, lambda, work_force;
+    double t = 0.0, external_work = 0.0;
+  };
+  // Newton state of the current step: its start (also its chart's origin, q_n) and its increment.
+  Snapshot start;
   Eigen::VectorXd increment, solution;
   bool have_factorization = false, refactor_requested = false;
   double factorized_step = 0.0;
@@ -329,9 +335,10 @@ struct GeneralizedAlpha::Implementation {
     const MatrixCoefficients coefficients{.mass = 1.0, .damping = gamma_prime / beta_prime,
                                           .stiffness = 1.0 / beta_prime};
     const int n = assembly.dof_count();
-    start = model.state();
-    const Eigen::VectorXd v0 = velocity, vdot0 = acceleration, a0 = algorithmic_acceleration,
-                          lambda0 = lambda;
+    save(start);
+    const Eigen::VectorXd& v0 = start.velocity;
+    const Eigen::VectorXd& vdot0 = start.acceleration;
+    const Eigen::VectorXd& a0 = start.algorithmic_acceleration;
     if (h != factorized_step) have_factorization = false;
 
     // Predictor (Brüls et al. 2012, Algorithm 1): a_{n+1} = base + (1 − α_f)/(1 − α_m) v̇_{n+1}.
@@ -346,7 +353,7 @@ struct GeneralizedAlpha::Implementation {
 
     bool converged = false;
     if (inside_chart()) {
-      model.state().assign_increment(start, increment);
+      model.state().assign_increment(start.q, increment);
       try {
         converged = newton(h, t_next, beta_prime, gamma_prime, coefficients, n);
       } catch (const EvaluationFailure&) {
@@ -365,13 +372,31 @@ struct GeneralizedAlpha::Implementation {
       return true;
     }
     // Not converged: restore the step's start.
-    model.state() = start;
-    velocity = v0;
-    acceleration = vdot0;
-    algorithmic_acceleration = a0;
-    lambda = lambda0;
+    restore(start);
     refactor_requested = true;
     return false;
+  }
+
+  void save(Snapshot& s) const {
+    s.q = model.state();
+    s.velocity = velocity;
+    s.acceleration = acceleration;
+    s.algorithmic_acceleration = algorithmic_acceleration;
+    s.lambda = lambda;
+    s.work_force = last_work_force;
+    s.t = t;
+    s.external_work = external_work;
+  }
+
+  void restore(const Snapshot& s) {
+    model.state() = s.q;
+    velocity = s.velocity;
+    acceleration = s.acceleration;
+    algorithmic_acceleration = s.algorithmic_acceleration;
+    lambda = s.lambda;
+    last_work_force = s.work_force;
+    t = s.t;
+    external_work = s.external_work;
   }
 
   /// An element or joint could not be evaluated at an iterate (its spar::Error is kept in
@@ -434,7 +459,7 @@ struct GeneralizedAlpha::Implementation {
       acceleration += beta_prime * dx;
       lambda += beta_prime * dlambda;
       if (!inside_chart()) return false;
-      model.state().assign_increment(start, increment);
+      model.state().assign_increment(start.q, increment);
       // 003 §5.1: D = [Δq, h²β Δλ].
       const double dlambda_norm = h * h * alpha.beta * beta_prime * dlambda.norm();
       norm_squared = increment_norm_squared(dx, dlambda_norm);
@@ -447,32 +472,18 @@ struct GeneralizedAlpha::Implementation {
   }
 
   // The start of the user's step, restored when the whole step fails (buffers kept across steps).
-  core::Configuration step_start;
-  Eigen::VectorXd step_velocity, step_acceleration, step_algorithmic_acceleration, step_lambda;
+  Snapshot step_start;
 
   /// One step of options.time_step, all or nothing: when it fails even after the cut-backs (or
   /// anything in it throws), state, velocities, accelerations, multipliers, time and energy
   /// balance are restored to the step's start, so no converged sub-step of it is left behind.
   void whole_step() {
-    step_start = model.state();
-    step_velocity = velocity;
-    step_acceleration = acceleration;
-    step_algorithmic_acceleration = algorithmic_acceleration;
-    step_lambda = lambda;
-    const double t0 = t, work0 = external_work;
-    const Eigen::VectorXd force0 = last_work_force;
+    save(step_start);
     const long steps0 = counters.steps;
     try {
       advance(options.time_step, 0);
     } catch (...) {
-      model.state() = step_start;
-      velocity = step_velocity;
-      acceleration = step_acceleration;
-      algorithmic_acceleration = step_algorithmic_acceleration;
-      lambda = step_lambda;
-      t = t0;
-      external_work = work0;
-      last_work_force = force0;
+      restore(step_start);
       counters.steps = steps0;
       refactor_requested = true;
       evaluate(t, nullptr, 1.0);  // the energies and residual of the restored state
