@@ -1,13 +1,43 @@
 #pragma once
-// What the ALE-RANCF examples report of their length control (000 §5, Table 2): the event log
-// written to the results file and the statistics of the merged elements' weights.
+// The length control of the ALE-RANCF examples (000 §5, Table 2): the check after each step, the
+// event log written to the results file and the statistics of the merged elements' weights.
 #include <spar/spar.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <optional>
+#include <ostream>
 #include <vector>
 
 namespace spar::examples {
+
+/// One length-control check after a step. On an event the centreline just before (phase 0) and
+/// after (phase 1) goes to `shapes` (rows: event, phase, x, y), the integrator is remapped and
+/// restarted from consistent accelerations (docs/rancf.md), and the event is logged and printed.
+/// Returns the total energy after the event, or nothing when no event happened.
+inline std::optional<double> control_length(core::SlidingCable<2>& cable, core::Model& model,
+                                            solvers::GeneralizedAlpha& integrator, int per_element,
+                                            std::ostream& shapes,
+                                            std::vector<core::LengthControlEvent>& events) {
+  Eigen::MatrixXd P;
+  const Eigen::MatrixXd before = cable.sample_centerline(model.state(), per_element);
+  const std::optional<core::LengthControlEvent> event = cable.control_length(model, integrator.time(), P);
+  if (!event) return std::nullopt;
+  const auto write_shape = [&](int phase, const Eigen::MatrixXd& points) {
+    for (Eigen::Index i = 0; i < points.rows(); ++i)
+      shapes << events.size() << ',' << phase << ',' << points(i, 0) << ',' << points(i, 1) << '\n';
+  };
+  write_shape(0, before);
+  write_shape(1, cable.sample_centerline(model.state(), per_element));
+  integrator.remap(P);
+  integrator.initialize();
+  events.push_back(*event);
+  std::printf("t = %.4f s: %s; merged weights (%.4f, %.4f, %.4f)%s\n", event->time, event->description.c_str(),
+              event->merged_weights(0), event->merged_weights(1), event->merged_weights(2),
+              event->merge_fallback ? " (fallback k = 1)" : "");
+  return integrator.energies().total();
+}
 
 /// 000 Table 2: the set of merged-element weights k_i, its extremes and σ of eq. (42).
 struct WeightStatistics {

@@ -32,6 +32,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 
 using namespace spar;
 
@@ -97,10 +98,6 @@ int main(int argc, char** argv) try {
   csv << "t,kinetic_energy,strain_energy,gravity_potential,total_energy,beam_length,slider_material,"
          "slider_x,slider_y\n";
   shapes << "event,phase,x,y\n";  // centrelines just before (phase 0) and after (1) each event
-  const auto write_shape = [&](int event, int phase, const Eigen::MatrixXd& points) {
-    for (Eigen::Index i = 0; i < points.rows(); ++i)
-      shapes << event << ',' << phase << ',' << points(i, 0) << ',' << points(i, 1) << '\n';
-  };
   const double initial_energy = integrator.energies().total();
   double max_kinetic = 0.0, max_deviation = 0.0, max_jump = 0.0, segment_reference = initial_energy;
   double max_segment_drift = 0.0, min_ratio = 1e300, max_ratio = 0.0, control_seconds = 0.0;
@@ -132,20 +129,10 @@ int main(int argc, char** argv) try {
     max_segment_drift = std::max(max_segment_drift, std::fabs(energy.total() - segment_reference));
     // Length control, timed (000 Table 1's split: the event, the remap and the restart).
     const auto start = std::chrono::steady_clock::now();
-    Eigen::MatrixXd P;
-    const Eigen::MatrixXd before = cable.sample_centerline(model.state(), per_element);
-    if (auto event = cable.control_length(model, integrator.time(), P)) {
-      write_shape(static_cast<int>(events.size()), 0, before);
-      write_shape(static_cast<int>(events.size()), 1, cable.sample_centerline(model.state(), per_element));
-      integrator.remap(P);
-      integrator.initialize();  // consistent accelerations of the new system (docs/rancf.md)
-      const double after = integrator.energies().total();
-      max_jump = std::max(max_jump, std::fabs(after - energy.total()));
-      segment_reference = after;
-      events.push_back(*event);
-      std::printf("t = %.4f s: %s; merged weights (%.4f, %.4f, %.4f)%s\n", event->time,
-                  event->description.c_str(), event->merged_weights(0), event->merged_weights(1),
-                  event->merged_weights(2), event->merge_fallback ? " (fallback k = 1)" : "");
+    if (const std::optional<double> after =
+            examples::control_length(cable, model, integrator, per_element, shapes, events)) {
+      max_jump = std::max(max_jump, std::fabs(*after - energy.total()));
+      segment_reference = *after;
     }
     control_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // Element lengths over L_std, but for the two next to the slider while it is next to an end
