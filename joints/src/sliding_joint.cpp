@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace spar::joints {
@@ -165,6 +166,15 @@ void SlidingJoint::acceleration_terms(const core::Configuration& q,
   c.head<3>() = slider_.acceleration_terms(q, velocity) - carrier_terms;
 }
 
+double SlidingJoint::event_distance(const core::Configuration& q) const {
+  double distance = std::numeric_limits<double>::infinity();
+  if (locked_) return distance;
+  const double z = zeta(q);
+  if (upper_stop_) distance = std::min(distance, *upper_stop_ - z);
+  if (lower_stop_) distance = std::min(distance, z - *lower_stop_);
+  return distance;
+}
+
 bool SlidingJoint::update_structure(const core::Configuration& q, const Eigen::VectorXd& /*velocity*/,
                                     double t, std::string& description) {
   if (locked_) return false;
@@ -172,6 +182,7 @@ bool SlidingJoint::update_structure(const core::Configuration& q, const Eigen::V
   const auto lock = [&](double stop, const char* which) {
     locked_ = true;
     lock_position_ = stop;
+    lock_time_ = t;
     zeta_at_lock_ = z;
     description = "sliding joint '" + name_ + "' locked at its " + which + " stop zeta = " +
                   number(stop) + " (zeta = " + number(z) + " after the step)";

@@ -13,6 +13,7 @@
 #include <spar/core/configuration.hpp>
 
 #include <Eigen/Core>
+#include <limits>
 
 #include <string>
 #include <vector>
@@ -51,6 +52,14 @@ public:
     (void)q;
     (void)t;
     phi_t.setZero();
+  }
+  /// How far the state is from this constraint's next event (an end stop that a slider
+  /// approaches), in the constraint's own unit: positive before it, ≤ 0 at or past it; +∞ when
+  /// no event lies ahead. The integrator shortens a step that crosses an event so that it ends on
+  /// it (DynamicOptions::locate_events) before update_structure switches the equations.
+  virtual double event_distance(const core::Configuration& q) const {
+    (void)q;
+    return std::numeric_limits<double>::infinity();
   }
   /// Called by the integrator after every converged step: a constraint with events (an end stop
   /// that locks a slider, a joint released when a mass leaves a beam) switches its equations here

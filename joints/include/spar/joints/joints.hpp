@@ -3,6 +3,7 @@
 /// spar::joints — the constraint interface, its kinematic building blocks, the joints and the
 /// drivers. Equations: docs/joints.md.
 
+#include <spar/joints/active_until.hpp>
 #include <spar/joints/ancf_spherical_joint.hpp>
 #include <spar/joints/angle_driver.hpp>
 #include <spar/joints/attachment.hpp>

@@ -82,6 +82,9 @@ class SlidingJoint final : public Constraint {
   /// c = R_A(Ω×(Ω×a)) − 2ζ̇ Σ N_I,ζ ẋ_I − x_B,ζζ ζ̇² (eq. J27); 0 for the lock row.
   void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
                           Eigen::Ref<Eigen::VectorXd> c) const override;
+  /// The distance in ζ to the nearer end stop ahead (+∞ when locked or without stops): the
+  /// integrator ends a step on the lock rather than an overshoot past it.
+  double event_distance(const core::Configuration& q) const override;
   /// After a converged step: locks at a stop that ζ has reached, raises spar::Error when ζ has
   /// left an end without a stop, and otherwise re-centres the window when ζ changed element.
   bool update_structure(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
@@ -96,6 +99,10 @@ class SlidingJoint final : public Constraint {
   /// x_B(ζ) in configuration q (the carrier point the slider is held to).
   Eigen::Vector3d carrier_point(const core::Configuration& q) const;
   bool locked() const { return locked_; }
+  /// The time of the step after which the joint locked (meaningful when locked()): with the
+  /// integrator's event location (DynamicOptions::locate_events) the time the slider reached
+  /// the stop, to the location's tolerance.
+  double lock_time() const { return lock_time_; }
   /// The stop the joint locked at (meaningful when locked()).
   double lock_position() const { return lock_position_; }
   /// ζ at the end of the step after which the joint locked, past the stop (meaningful when
@@ -127,6 +134,7 @@ class SlidingJoint final : public Constraint {
   std::optional<double> lower_stop_, upper_stop_;
   bool locked_ = false;
   double lock_position_ = 0.0;
+  double lock_time_ = 0.0;
   double zeta_at_lock_ = 0.0;
   int window_element_ = 0;
   int window_first_ = 0, window_last_ = 0;  ///< control points of the window
