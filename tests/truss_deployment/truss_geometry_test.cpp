@@ -1,0 +1,112 @@
+// The truss unit's geometry (examples/truss_deployment/truss_model.hpp, README "Geometry"), its
+// joints at t = 0 and the deployment laws of 003 eqs. (54)–(57).
+#include "truss_model.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+using namespace spar;
+using examples::TrussParameters;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+/// Every constraint's |Φ|∞ at (q, t).
+double largest_violation(const examples::TrussUnit& unit, double t) {
+  double largest = 0.0;
+  for (const auto& joint : unit.joints) {
+    Eigen::VectorXd phi(joint->equation_count());
+    joint->value(unit.model.state(), t, phi);
+    if (phi.size() > 0) largest = std::max(largest, phi.lpNorm<Eigen::Infinity>());
+  }
+  return largest;
+}
+
+}  // namespace
+
+TEST_CASE("truss geometry: the side diagonal's slide distance solves the sheared face, and locks at a when deployed",
+          "[truss]") {
+  const TrussParameters p;
+  for (const double beta : {5.0, 30.0, 47.5, 75.0, 90.0}) {
+    const double b = beta * pi / 180.0, s = examples::slide_distance(b, p);
+    // |b d + s e_z| = √(a² + b²) (the diagonal's length) for bay 0's rising bars: exact up to
+    // round-off of numbers of size 4.
+    const Eigen::Vector3d diagonal = p.bar_length * examples::bar_direction(0, b) + s * Eigen::Vector3d::UnitZ();
+    CHECK(std::abs(diagonal.norm() - std::sqrt(20.0)) <= 1e-14);
+    CHECK(std::abs(examples::angle_from_slide(s, p) - b) <= 1e-7);  // acos near 90°: 1e-7 rad of 1e-15
+  }
+  CHECK(std::abs(examples::slide_distance(pi / 2, p) - p.frame_side) <= 1e-15);
+  CHECK(std::abs(examples::slide_distance(5.0 * pi / 180.0, p) - 0.473748097) <= 1e-9);
+  // Deployed: frames at X = 0, 4, 8 and frame 2 level with frame 0 (the Z fold), D at (8, 0, 2).
+  CHECK((examples::corner(2, 0, 1, pi / 2, p) - Eigen::Vector3d(8, 0, 2)).norm() <= 1e-14);
+  CHECK((examples::corner(1, 0, 0, 5.0 * pi / 180.0, p) - Eigen::Vector3d(4 * std::sin(5 * pi / 180), 0, 4 * std::cos(5 * pi / 180))).norm() <= 1e-14);
+}
+
+TEST_CASE("truss geometry: a top or bottom diagonal turns against the frames, so clamping it would weld the bay",
+          "[truss]") {
+  // 003 says the top and bottom diagonals are clamped to the frames. The frames translate (the
+  // bay is a parallelogram linkage), and the face diagonal from corner (y 0, z) of frame k to
+  // corner (y 1, z) of frame k + 1 turns about Y with the bars: its direction at β is its
+  // direction at β₀ turned by β − β₀ about Y. A clamp keeps its rotation relative to the frame, so
+  // it would hold β = β₀. The model joins these diagonals with hinges about Y (README, "Decisions").
+  const TrussParameters p;
+  const auto direction = [&](double beta) {
+    return (examples::corner(1, 1, 1, beta, p) - examples::corner(0, 0, 1, beta, p)).normalized();
+  };
+  const double beta0 = p.initial_angle, beta1 = 60.0 * pi / 180.0;
+  const Eigen::Vector3d turned = Eigen::AngleAxisd(beta1 - beta0, Eigen::Vector3d::UnitY()) * direction(beta0);
+  CHECK((turned - direction(beta1)).norm() <= 1e-14);
+  CHECK(std::acos(direction(beta0).dot(direction(beta1))) > 0.5);  // far from a rigid attachment
+}
+
+TEST_CASE("truss model: 28 members and every joint satisfied at t = 0 to 1e-12", "[truss]") {
+  for (const int elements : {1, 4}) {
+    TrussParameters p;
+    p.elements = elements;
+    examples::TrussUnit unit = examples::build_truss_unit(p);
+    CHECK(unit.members.size() == 28);
+    // 8 corner clamps (frames 1, 2), 8 cross-bars and 4 face diagonals hinged at both ends,
+    // 4 side-diagonal hinges, 4 sliding joints.
+    CHECK(unit.joints.size() == 8 + 16 + 8 + 4 + 4);
+    CHECK(largest_violation(unit, 0.0) <= 1e-12);
+    for (const auto& slider : unit.sliders) {
+      CHECK(std::abs(slider.joint->zeta(unit.model.state()) - (slider.bay == 0 ? 0.4737481 : 2 - 0.4737481)) <= 1e-7);
+      CHECK(slider.joint->event_distance(unit.model.state()) > 0.47);
+    }
+    examples::add_deployment_drivers(unit, "cosine", 20.0);
+    CHECK(unit.joints.size() == 40 + 4);
+    CHECK(largest_violation(unit, 0.0) <= 1e-12);
+    CHECK(unit.model.state().position[unit.d_node].isApprox(Eigen::Vector3d(8 * std::sin(p.initial_angle), 0, 2), 1e-14));
+  }
+}
+
+TEST_CASE("deployment laws (003 eqs. 54-57): from beta0 to beta_f in t_f, derivatives by finite differences",
+          "[truss]") {
+  const double beta0 = 5 * pi / 180, beta_f = pi / 2, t_f = 20.0;
+  for (const char* name : examples::deployment_laws) {
+    INFO(name);
+    const joints::TimeFunction f = examples::deployment_angle(name, beta0, beta_f, t_f);
+    CHECK(std::abs(f.value(0.0)) <= 1e-15);
+    CHECK(std::abs(f.value(t_f) - (beta_f - beta0)) <= 1e-15);
+    CHECK(std::abs(f.value(25.0) - (beta_f - beta0)) <= 1e-15);  // held after t_f
+    CHECK(f.first_derivative(25.0) == 0.0);
+    // Central differences, step 1e-4 s: truncation (1e-8 · f‴) and round-off (1e-16/1e-4) below 1e-9.
+    for (const double t : {0.7, 5.0, 10.0, 13.3, 19.2}) {
+      const double dt = 1e-4;
+      CHECK(std::abs((f.value(t + dt) - f.value(t - dt)) / (2 * dt) - f.first_derivative(t)) <= 1e-9);
+      CHECK(std::abs((f.first_derivative(t + dt) - f.first_derivative(t - dt)) / (2 * dt) - f.second_derivative(t)) <= 1e-9);
+    }
+    // The smooth laws start and end at rest; the linear one runs at (β_f − β₀)/t_f throughout.
+    const double rate0 = f.first_derivative(1e-12), rate_f = f.first_derivative(t_f - 1e-12);
+    if (std::string(name) == "linear") {
+      CHECK(std::abs(rate0 - (beta_f - beta0) / t_f) <= 1e-15);
+    } else {
+      CHECK(std::abs(rate0) <= 1e-9);
+      CHECK(std::abs(rate_f) <= 1e-9);
+    }
+  }
+  CHECK_THROWS_WITH(examples::deployment_angle("sine", beta0, beta_f, t_f), Catch::Contains("linear, polynomial, cycloid or cosine"));
+}
