@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 suites=("$@")
-[ ${#suites[@]} -gt 0 ] || suites=(lie iga solvers beam dynamics)
+[ ${#suites[@]} -gt 0 ] || suites=(lie iga solvers beam dynamics ancf rancf truss)
 
 scripts/setup.sh
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release

@@ -498,7 +498,7 @@ struct GeneralizedAlpha::Implementation {
     return g;
   }
 
-  /// One user step of options.time_step (docs/dynamics.md D10). When a constraint's event falls
+  /// One user step of options.time_step (docs/dynamics.md D6c). When a constraint's event falls
   /// inside it (its event distance g goes from positive to below −event_tolerance), the step is
   /// replaced by steps that end just past the event, −event_tolerance ≤ g ≤ 0; the event is
   /// handled there and the rest of the user step follows. A lock that happens where the slider

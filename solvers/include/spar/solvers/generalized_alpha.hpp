@@ -66,7 +66,7 @@ struct DynamicOptions {
   /// Events inside a step (a slider reaching its end stop) are located: the step is shortened
   /// so that it ends past the event by at most `event_tolerance`, in the unit of the constraint's
   /// event distance (m for a sliding joint), before the event switches the equations
-  /// (docs/dynamics.md D10). Off: the event happens at the end of the step that crossed it, and
+  /// (docs/dynamics.md D6c). Off: the event happens at the end of the step that crossed it, and
   /// the projection onto the new equations moves the state by the overshoot.
   /// 1 µm for a slider: its projection onto the stop then costs a stiff steel tube ~1e-5 J of
   /// strain energy, and the step after the event is not shorter than ~1 µm over the slider's speed.
