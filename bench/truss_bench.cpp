@@ -17,7 +17,7 @@ constexpr solvers::IterationMatrix strategies[] = {
 
 /// The example's integrator settings.
 solvers::DynamicOptions truss_options(solvers::IterationMatrix strategy) {
-  return {.time_step = 0.005, .spectral_radius = 0.9, .iteration_matrix = strategy, .tolerance = 1e-12,
+  return {.time_step = 0.005, .spectral_radius = 0.9, .iteration_matrix = strategy, .tolerance = 1e-8,
           .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8};
 }
 
