@@ -4,6 +4,8 @@
 #include "system_assembly.hpp"
 
 #include <algorithm>
+#include <Eigen/SparseCholesky>
+
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -51,9 +53,12 @@ public:
     in.load_factor = load_factor;
     in.gravity = model_.gravity();
     double increment_norm = INFINITY;
+    const bool start_multipliers = assembly_.multiplier_count() > 0 && lambda_.isZero(0.0);
     for (int iteration = 0; iteration <= options_.max_iterations; ++iteration) {
       try {
         assembly_.evaluate(in, lambda_, &stiffness_only, detail::Chart::converged, chart, false);
+        if (iteration == 0 && start_multipliers && balancing_multipliers())
+          assembly_.evaluate(in, lambda_, &stiffness_only, detail::Chart::converged, chart, false);
       } catch (const Error&) {
         return false;  // an element that cannot be evaluated here: cut the load step back
       }
@@ -90,6 +95,31 @@ public:
   }
 
 private:
+  /// The first load step starts from the multipliers that best balance its load,
+  /// λ₀ = argmin ‖Bᵀλ + r‖ over the free dofs (r the residual at λ = 0), from the normal
+  /// equations B Bᵀ λ₀ = −B r; false (λ left at 0) when B Bᵀ is singular (redundant
+  /// constraints). At λ = 0 the tangent of a constraint that owns a coordinate with neither
+  /// stiffness nor mass — a sliding joint's ζ, whose only entry is −x_B,ζζ·λ (docs/joints.md
+  /// eq. J26) — is singular, so Newton could not take its first step.
+  bool balancing_multipliers() {
+    const int n = assembly_.dof_count(), m = assembly_.multiplier_count();
+    const Eigen::SparseMatrix<double> A = assembly_.pattern().matrix();
+    Eigen::SparseMatrix<double> Bt = A.middleCols(n, m).topRows(n);
+    Eigen::VectorXd r = assembly_.residual().head(n);
+    for (int dof = 0; dof < n; ++dof)
+      if (fixed_[dof]) r(dof) = 0.0;
+    for (int k = 0; k < Bt.outerSize(); ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(Bt, k); it; ++it)
+        if (fixed_[it.row()]) it.valueRef() = 0.0;
+    const Eigen::SparseMatrix<double> normal = Bt.transpose() * Bt;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(normal);
+    if (ldlt.info() != Eigen::Success) return false;
+    const Eigen::VectorXd lambda = ldlt.solve(-(Bt.transpose() * r));
+    if (ldlt.info() != Eigen::Success || !lambda.allFinite()) return false;
+    lambda_ = lambda;
+    return true;
+  }
+
   core::Model& model_;
   const StaticOptions& options_;
   detail::SystemAssembly assembly_;
