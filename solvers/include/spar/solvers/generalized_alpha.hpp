@@ -64,6 +64,42 @@ struct DynamicOptions {
   double modified_newton_contraction = 0.5;  ///< refactorize when ‖Δ_k‖ > this · ‖Δ_{k−1}‖
   LinearSolverKind linear_solver = LinearSolverKind::klu;
   core::AssemblyExecution assembly = core::AssemblyExecution::serial;
+  /// Consistent initial assembly by the first initialize() (docs/dynamics.md, "Initial
+  /// assembly"): the positions are moved onto Φ(q, t₀) = 0 and the velocities onto
+  /// B v + Φ_t = 0, each by the least change in the metric of the mass matrix; what changed is
+  /// reported by GeneralizedAlpha::initial_assembly(). Off: the run starts from the state as given
+  /// (an inconsistent start is then snapped onto the constraints by the first step).
+  bool initial_assembly = true;
+  /// The largest position change the initial assembly may make, ‖Δq‖∞ over the increments (m for
+  /// translations, rad for rotations, each vector entry in its own unit, or divided by
+  /// `increment_units` when given). A larger one is a spar::Error and leaves the state as given:
+  /// a joint placed that far off is a modelling error, not a start to be snapped shut.
+  double initial_assembly_tolerance = 1e-3;
+  /// τ [s] of the metric M + τ²K in which the initial assembly projects the velocities (K the
+  /// tangent stiffness at the assembled state). 0: the mass metric, the least change of kinetic
+  /// energy — the velocities an impulse through the constraints gives (a driver started from
+  /// rest spins its own node and leaves the rest of a flexible body behind, which then rings).
+  /// τ well above the period of the slowest elastic mode makes deformation rates expensive: the
+  /// projection then gives the bodies the rigid motion the constraints allow (to ~1/(τω)²).
+  double initial_velocity_stiffness_time = 0.0;
+};
+
+/// What the initial assembly changed (DynamicOptions::initial_assembly).
+struct InitialAssembly {
+  bool performed = false;                 ///< false when switched off (or before initialize())
+  int position_iterations = 0;            ///< Gauss–Newton iterations onto Φ = 0 (0: already there)
+  double constraint_residual = 0.0;       ///< ‖Φ(q₀, t₀)‖∞ of the state as given
+  double velocity_constraint_residual = 0.0;  ///< ‖B v₀ + Φ_t‖∞ of the velocities as given
+  /// The position change Δq, global tangent layout (q ← q₀ ⊕ Δq up to round-off: the sum of the
+  /// Gauss–Newton increments).
+  Eigen::VectorXd position_change;
+  /// ‖Δq‖∞ in the units of the tolerance (see DynamicOptions::initial_assembly_tolerance), and the
+  /// block where it happened (−1: none moved).
+  double largest_position_change = 0.0;
+  int largest_position_change_block = -1;
+  /// The velocity change Δv (global tangent layout: ẋ inertial, Ω material) and ‖Δv‖∞.
+  Eigen::VectorXd velocity_change;
+  double largest_velocity_change = 0.0;
 };
 
 /// What a run did.
@@ -107,8 +143,11 @@ public:
   void set_velocity(int node, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular);
   /// Sets any block's initial velocity (before the first step), in the block's tangent layout.
   void set_velocity(int block, const Eigen::VectorXd& velocity);
-  /// Computes consistent initial accelerations and multipliers from M v̇ + Bᵀλ = −f and
-  /// B v̇ = −c. Done by the first step() if not called. Called again during a run (after a remap
+  /// The first call assembles the initial state (DynamicOptions::initial_assembly: positions
+  /// onto Φ = 0, velocities onto B v + Φ_t = 0, least change in the mass metric; spar::Error
+  /// when the positions would move by more than initial_assembly_tolerance or do not converge,
+  /// the state then left as given), then computes consistent initial accelerations and
+  /// multipliers from M v̇ + Bᵀλ = −f and B v̇ = −c. Done by the first step() if not called. Called again during a run (after a remap
   /// whose map P does not carry the accelerations, e.g. an ALE re-mesh), it restarts the method
   /// from consistent accelerations at the current state; the energy balance carries on, and a
   /// jump of the energy at the re-mesh shows in the numerical dissipation.
@@ -133,6 +172,8 @@ public:
   double constraint_residual() const;
   /// The energies at the current state and the balance since t = 0.
   Energies energies() const;
+  /// What the initial assembly of the first initialize() changed.
+  const InitialAssembly& initial_assembly() const;
 
   /// Structure changes (docs/model.md, "Structure changes"). The integrator rebuilds its sparse
   /// pattern and symbolic factorization by itself after a step in which a constraint's
