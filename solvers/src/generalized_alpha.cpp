@@ -784,6 +784,20 @@ const Eigen::VectorXd& GeneralizedAlpha::velocity() const { return impl_->veloci
 const Eigen::VectorXd& GeneralizedAlpha::acceleration() const { return impl_->acceleration; }
 const Eigen::VectorXd& GeneralizedAlpha::multipliers() const { return impl_->lambda; }
 const DynamicCounters& GeneralizedAlpha::counters() const { return impl_->counters; }
+int GeneralizedAlpha::constraint_count() const { return static_cast<int>(impl_->constraints.size()); }
+
+const joints::Constraint& GeneralizedAlpha::constraint(int c) const {
+  if (c < 0 || c >= constraint_count())
+    throw Error("constraint " + std::to_string(c) + " does not exist (" + std::to_string(constraint_count()) +
+                    " constraints)",
+                "solvers::GeneralizedAlpha::constraint", "give an index into the constructor's constraint list");
+  return *impl_->constraints[c];
+}
+
+Eigen::VectorXd GeneralizedAlpha::multipliers(int c) const {
+  const int m = constraint(c).equation_count();
+  return impl_->lambda.segment(impl_->assembly.first_multiplier(c), m);
+}
 int GeneralizedAlpha::multiplier_count() const { return impl_->assembly.multiplier_count(); }
 int GeneralizedAlpha::last_step_iterations() const { return impl_->last_iterations; }
 

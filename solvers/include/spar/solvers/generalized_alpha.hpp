@@ -164,6 +164,14 @@ public:
   const Eigen::VectorXd& acceleration() const;
   /// The Lagrange multipliers λ (constraint forces), constraint by constraint.
   const Eigen::VectorXd& multipliers() const;
+  /// The multipliers of constraint `c` (its equation_count() entries), in the order of the
+  /// constructor's list; with joints::reaction or a joint's reaction_in_frame they give the
+  /// joint's reaction (docs/joints.md §5). spar::Error for a constraint that does not exist.
+  Eigen::VectorXd multipliers(int c) const;
+  /// Constraint `c` of the constructor's list (the integrator owns them), e.g. to read a joint's
+  /// coordinates: dynamic_cast<const joints::RevoluteJoint&>(integrator.constraint(0)).
+  const joints::Constraint& constraint(int c) const;
+  int constraint_count() const;
   const DynamicCounters& counters() const;
   int multiplier_count() const;
   /// Newton iterations of the last completed step.
