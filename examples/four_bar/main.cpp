@@ -67,6 +67,10 @@ int main(int argc, char** argv) try {
                                         .initial_velocity_stiffness_time = stiffness_time});
   integrator.initialize();
   const solvers::InitialAssembly& assembled = integrator.initial_assembly();
+  // The ground pivots' joints (four_bar_model.hpp: A is constraint 0, D constraint 3; a = the
+  // rod's root, b = the ground), for their reactions and coordinates.
+  const auto& pivot_a = dynamic_cast<const joints::RevoluteJoint&>(integrator.constraint(0));
+  const auto& pivot_d = dynamic_cast<const joints::RevoluteJoint&>(integrator.constraint(3));
   const core::Configuration initial_state = model.state();  // the reference geometry, for arc lengths
 
   // 4. Integrate and record.
@@ -86,6 +90,11 @@ int main(int argc, char** argv) try {
                                             .description = "the rigid four-bar's rocker angle at theta(t)"},
                                            {.name = "rocker_angle_error", .unit = "rad",
                                             .description = "rocker_angle - rigid_rocker_angle"},
+                                           {.name = "rocker_joint_angle", .unit = "rad",
+                                            .description = "pivot D's relative angle: the rocker's root section "
+                                                           "turned about Z since t = 0"},
+                                           {.name = "rocker_joint_rate", .unit = "rad/s",
+                                            .description = "pivot D's relative rate about Z"},
                                            {.name = "constraint_residual", .unit = "m",
                                             .description = "largest constraint violation |Phi|_inf after the step "
                                                            "(point rows in m, axis rows dot products)"},
@@ -96,7 +105,15 @@ int main(int argc, char** argv) try {
                                .probes = {{.name = "crank_tip", .unit = "m", .description = "B, the crank's tip node"},
                                           {.name = "rocker_tip", .unit = "m", .description = "C, the rocker's tip node"},
                                           {.name = "coupler_center", .unit = "m",
-                                           .description = "the coupler's centre of mass"}},
+                                           .description = "the coupler's centre of mass"},
+                                          {.name = "pivot_a_force", .unit = "N",
+                                           .description = "force of pivot A on the crank, in the joint's frame "
+                                                          "(n1, n2, n) = (-Y, X, Z) carried by the ground (docs/joints.md 5)"},
+                                          {.name = "pivot_a_moment", .unit = "N m",
+                                           .description = "moment of pivot A on the crank about A, joint's frame "
+                                                          "(its Z component: 0, frictionless)"},
+                                          {.name = "pivot_d_force", .unit = "N",
+                                           .description = "force of pivot D on the rocker, in the joint's frame"}},
                                .centerline_points = {samples, samples},
                                .centerline_fields = examples::centerline_field_layout()});
   results.write_attribute("example", "four_bar (issue 14)");
@@ -116,6 +133,9 @@ int main(int argc, char** argv) try {
     const double psi = mechanism.rocker_angle(q), psi_rigid = rigid.rocker_angle(theta);
     const double error = psi - psi_rigid, residual = integrator.constraint_residual();
     const solvers::Energies energy = integrator.energies();
+    const joints::Wrench at_a = pivot_a.reaction_in_frame(q, integrator.time(), integrator.multipliers(0));
+    const joints::Wrench at_d = pivot_d.reaction_in_frame(q, integrator.time(), integrator.multipliers(3));
+    const double joint_angle = pivot_d.relative_angle(q), joint_rate = pivot_d.relative_rate(q, integrator.velocity());
     max_error = std::max(max_error, std::abs(error));
     max_residual = std::max(max_residual, residual);
     csv << integrator.time() << ',' << theta << ',' << psi << ',' << psi_rigid << ',' << error << ',' << residual
@@ -126,11 +146,11 @@ int main(int argc, char** argv) try {
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
                     .scalars = examples::followed_by<double>(
-                        {theta, psi, psi_rigid, error, residual,
+                        {theta, psi, psi_rigid, error, joint_angle, joint_rate, residual,
                          static_cast<double>(integrator.last_step_iterations())},
                         examples::energy_balance_values(energy)),
                     .probes = {q.position[mechanism.crank_tip], q.position[mechanism.rocker_tip],
-                               q.position[mechanism.coupler_node]},
+                               q.position[mechanism.coupler_node], at_a.force, at_a.moment, at_d.force},
                     .centerlines = {crank.sample_centerline(q, samples), rocker.sample_centerline(q, samples)},
                     .centerline_fields = {
                         examples::centerline_fields(crank, crank_arc_length, q, integrator.velocity()),
