@@ -6,6 +6,7 @@
 //   four_bar --h 5e-4 --t-end 0.2
 //   four_bar --initial-assembly off                 (start as given: from rest, inconsistent with the drive)
 //   four_bar --elements 8 --out results/four_bar_8
+//   four_bar --output-interval 1e-3                 (record every 1 ms, interpolated between steps)
 //
 // Description:
 //   Ground pivots A = (0, 0, 0) and D = (0.4, 0, 0); the crank A → B (0.1 m) and the rocker
@@ -32,6 +33,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 using namespace spar;
 
@@ -47,6 +49,9 @@ int main(int argc, char** argv) try {
   const double stiffness_time = cli.number("--velocity-stiffness-time", 1.0,
                                            "initial velocities projected in the metric M + tau^2 K: tau [s] "
                                            "(0: the mass metric, an impulsive start)");
+  const double output_interval = cli.number("--output-interval", 0.0,
+                                            "record every this many seconds, interpolated between steps "
+                                            "(0: every step)");
   const std::string out = cli.text("--out", "results/four_bar", "output folder");
   if (!cli.finish()) return 0;
   if (assembly != "on" && assembly != "off")
@@ -99,7 +104,7 @@ int main(int argc, char** argv) try {
                                             .description = "largest constraint violation |Phi|_inf after the step "
                                                            "(point rows in m, axis rows dot products)"},
                                            {.name = "newton_iterations", .unit = "1",
-                                            .description = "Newton iterations (linear solves) of the step",
+                                            .description = "Newton iterations (linear solves) of the step (that holds the sample)",
                                             .integer = true}},
                                            examples::energy_balance_layout()),
                                .probes = {{.name = "crank_tip", .unit = "m", .description = "B, the crank's tip node"},
@@ -127,24 +132,40 @@ int main(int argc, char** argv) try {
          "newton_iterations,kinetic_energy,strain_energy,gravity_potential,"
       << examples::energy_balance_csv_columns << '\n';
   double max_error = 0.0, max_residual = 0.0;
-  auto record = [&]() {
-    const core::Configuration& q = model.state();
+  // The largest rocker error and constraint residual over every step, whatever is recorded.
+  auto check_step = [&]() {
     const double theta = rigid.crank_angle(integrator.time());
-    const double psi = mechanism.rocker_angle(q), psi_rigid = rigid.rocker_angle(theta);
-    const double error = psi - psi_rigid, residual = integrator.constraint_residual();
-    const solvers::Energies energy = integrator.energies();
-    const joints::Wrench at_a = pivot_a.reaction_in_frame(q, integrator.time(), integrator.multipliers(0));
-    const joints::Wrench at_d = pivot_d.reaction_in_frame(q, integrator.time(), integrator.multipliers(3));
-    const double joint_angle = pivot_d.relative_angle(q), joint_rate = pivot_d.relative_rate(q, integrator.velocity());
-    max_error = std::max(max_error, std::abs(error));
-    max_residual = std::max(max_residual, residual);
-    csv << integrator.time() << ',' << theta << ',' << psi << ',' << psi_rigid << ',' << error << ',' << residual
+    max_error = std::max(max_error, std::abs(mechanism.rocker_angle(model.state()) - rigid.rocker_angle(theta)));
+    max_residual = std::max(max_residual, integrator.constraint_residual());
+  };
+  // λ of constraint c within a multiplier vector (the constraints' equations one after another).
+  auto joint_multipliers = [&](const Eigen::VectorXd& lambda, int c) {
+    int first = 0;
+    for (int i = 0; i < c; ++i) first += integrator.constraint(i).equation_count();
+    return Eigen::VectorXd(lambda.segment(first, integrator.constraint(c).equation_count()));
+  };
+  // Records one sample: the state at the end of a step, or interpolated at an output time.
+  auto record = [&](const solvers::Sample& sample) {
+    const core::Configuration& q = sample.q;
+    const double t = sample.time, theta = rigid.crank_angle(t);
+    const double psi = mechanism.rocker_angle(q), psi_rigid = rigid.rocker_angle(theta), error = psi - psi_rigid;
+    double residual = 0.0;
+    for (int c = 0; c < integrator.constraint_count(); ++c) {
+      Eigen::VectorXd phi(integrator.constraint(c).equation_count());
+      integrator.constraint(c).value(q, t, phi);
+      residual = std::max(residual, phi.lpNorm<Eigen::Infinity>());
+    }
+    const solvers::Energies& energy = sample.energies;
+    const joints::Wrench at_a = pivot_a.reaction_in_frame(q, t, joint_multipliers(sample.multipliers, 0));
+    const joints::Wrench at_d = pivot_d.reaction_in_frame(q, t, joint_multipliers(sample.multipliers, 3));
+    const double joint_angle = pivot_d.relative_angle(q), joint_rate = pivot_d.relative_rate(q, sample.velocity);
+    csv << t << ',' << theta << ',' << psi << ',' << psi_rigid << ',' << error << ',' << residual
         << ',' << integrator.last_step_iterations() << ',' << energy.kinetic << ',' << energy.strain << ','
         << energy.gravity;
     examples::write_energy_balance_csv(csv, energy);
     csv << '\n';
-    results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
-                    .multipliers = &integrator.multipliers(),
+    results.append({.time = t, .configuration = &q, .velocity = &sample.velocity,
+                    .multipliers = &sample.multipliers,
                     .scalars = examples::followed_by<double>(
                         {theta, psi, psi_rigid, error, joint_angle, joint_rate, residual,
                          static_cast<double>(integrator.last_step_iterations())},
@@ -153,14 +174,26 @@ int main(int argc, char** argv) try {
                                q.position[mechanism.coupler_node], at_a.force, at_a.moment, at_d.force},
                     .centerlines = {crank.sample_centerline(q, samples), rocker.sample_centerline(q, samples)},
                     .centerline_fields = {
-                        examples::centerline_fields(crank, crank_arc_length, q, integrator.velocity()),
-                        examples::centerline_fields(rocker, rocker_arc_length, q, integrator.velocity())}});
+                        examples::centerline_fields(crank, crank_arc_length, q, sample.velocity),
+                        examples::centerline_fields(rocker, rocker_arc_length, q, sample.velocity)}});
   };
-  record();
+  // Every step, or every output_interval through a solvers::TimeSampler.
+  std::optional<solvers::TimeSampler> sampler;
+  if (output_interval > 0.0) sampler = solvers::TimeSampler::every(output_interval);
+  auto record_step = [&]() {
+    check_step();
+    if (sampler) {
+      for (const solvers::Sample& sample : sampler->update(integrator)) record(sample);
+    } else {
+      record({.time = integrator.time(), .q = model.state(), .velocity = integrator.velocity(),
+              .multipliers = integrator.multipliers(), .energies = integrator.energies()});
+    }
+  };
+  record_step();
   core::ProgressBar progress(t_end, "four_bar");
   while (integrator.time() < t_end - 0.5 * h) {
     integrator.step();
-    record();
+    record_step();
     progress.update(integrator.time(), integrator.counters().steps);
   }
   progress.finish();
