@@ -1,7 +1,7 @@
 // Joint-level outputs (docs/joints.md §5): a revolute joint's reaction against hand-computed
 // static and dynamic reactions, its relative angle and rate under a driver, a prismatic joint's
-// stroke. The body: mass m, inertia J about its centre of mass C = (L, 0, 0), hinged about Z at
-// the origin.
+// stroke; the attachment's offset initialization. The body: mass m, inertia J about its centre
+// of mass C = (L, 0, 0), hinged about Z at the origin.
 #include <spar/joints/angle_driver.hpp>
 #include <spar/joints/prismatic_joint.hpp>
 #include <spar/joints/reaction.hpp>
@@ -13,6 +13,8 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstddef>
+#include <new>
 #include <numbers>
 
 using namespace spar;
@@ -120,4 +122,19 @@ TEST_CASE("prismatic coordinates: stroke and its rate", "[joints]") {
   v << 0.3, -0.2, 0.1, 0.0, 0.0, 2.0;  // ẋ, Ω (material)
   const Eigen::Vector3d p_dot = v.head<3>() + R * Eigen::Vector3d(0, 0, 2.0).cross(Eigen::Vector3d(0, 0.1, 0));
   CHECK(joint.stroke_rate(q, v) == Approx(p_dot.dot(d)).epsilon(1e-15));
+}
+
+TEST_CASE("attachment: Attachment{node, {}} has a zero offset, whatever the memory held", "[joints]") {
+  // Built over bytes 0xFF (NaN as doubles): with an Eigen::Vector3d offset, `{}` ran Eigen's
+  // default constructor, which leaves the entries as they were (NaN here). The bytes are written
+  // through a volatile pointer: a memset before the object's lifetime is a dead store the
+  // optimizer removes.
+  alignas(joints::Attachment) unsigned char memory[sizeof(joints::Attachment)];
+  volatile unsigned char* bytes = memory;
+  for (std::size_t i = 0; i < sizeof memory; ++i) bytes[i] = 0xFF;
+  const auto* attachment = new (memory) joints::Attachment{3, {}};
+  CHECK(attachment->node == 3);
+  CHECK(attachment->offset == Eigen::Vector3d::Zero());
+  const joints::Attachment given{-1, Eigen::Vector3d(1, 2, 3)};
+  CHECK(given.offset == Eigen::Vector3d(1, 2, 3));
 }
