@@ -49,7 +49,9 @@ struct DynamicOptions {
   double spectral_radius = 0.9;  ///< ρ∞; 1 = no numerical dissipation
   IterationMatrix iteration_matrix = IterationMatrix::update;
   /// 003 §5.1: converged when ‖[Δq, h²βΔλ]‖² ≤ tolerance — a *squared* norm, Δq in m and rad
-  /// (or each block's own unit when `increment_units` is set)…
+  /// (or each block's own unit when `increment_units` is set): the default 1e-6 accepts a last
+  /// Newton increment of up to 1e-3 m or rad (the iterate itself is then far closer, Newton
+  /// converging quadratically); for increments below δ give δ²…
   double tolerance = 1e-6;
   /// Optional unit of each increment entry (global tangent layout, dof_count entries): the
   /// convergence test divides Δq by it, so metres, radians, slopes and curve parameters are
@@ -104,7 +106,10 @@ struct InitialAssembly {
 
 /// What a run did.
 struct DynamicCounters {
-  long steps = 0;                 ///< completed steps (a cut step counts its sub-steps)
+  /// Completed steps, sub-steps included: a user step() halved once counts 2 (the halvings are
+  /// in `cutbacks`), so steps − cutbacks is the number of step() calls that completed (as long as
+  /// none threw: a failed call keeps its cut-backs, not its sub-steps).
+  long steps = 0;
   long newton_iterations = 0;     ///< linear solves
   long jtheta_evaluations = 0;    ///< iterations that evaluated the rotational block J_θ
   long factorizations = 0;        ///< numeric factorizations
