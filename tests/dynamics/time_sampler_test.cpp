@@ -36,6 +36,7 @@ TEST_CASE("time sampler: every 1 ms from h = 3e-4 s, exact for a falling body sp
   model.set_gravity(g);
   solvers::GeneralizedAlpha integrator(model, {}, {.time_step = 3e-4, .tolerance = 1e-24});
   integrator.set_velocity(body, v0, omega);
+  integrator.initialize();
   solvers::TimeSampler sampler = solvers::TimeSampler::every(1e-3);
   std::vector<solvers::Sample> samples;
   auto collect = [&] { for (const auto& s : sampler.update(integrator)) samples.push_back(s); };
@@ -72,6 +73,7 @@ SampledRun pendulum(double h, std::vector<double> times, double t_end) {
                                                            joints::Attachment{-1}, Eigen::Vector3d::UnitZ(), model.state()));
   solvers::GeneralizedAlpha integrator(model, std::move(joints),
                                        {.time_step = h, .tolerance = 1e-24, .constraint_tolerance = 1e-13});
+  integrator.initialize();
   solvers::TimeSampler sampler(std::move(times));
   SampledRun run;
   auto collect = [&] {

@@ -21,9 +21,10 @@ struct Sample {
   Energies energies;            ///< the energy balance (interpolated linearly, like v)
 };
 
-/// Collects samples at output times as an integrator steps. Call update() once before the first
-/// step and after every step: it returns the samples whose times fall in (t_n, t_{n+1}] of the
-/// step just taken (at the first call, those equal to the start time).
+/// Collects samples at output times as an integrator steps. Call update() once after
+/// initialize() (whose initial assembly may move the state) and before the first step, then after
+/// every step: it returns the samples whose times fall in (t_n, t_{n+1}] of the step just taken
+/// (at the first call, those equal to the start time).
 ///
 /// Between steps n and n + 1 (h = t_{n+1} − t_n, s = (t − t_n)/h), in the chart at q_n:
 ///   q(t) = q_n ⊕ Δ(s),  Δ(s) = H₁(s) D + h H₂(s) v_n + h H₃(s) v_{n+1}   (cubic Hermite),
