@@ -92,8 +92,6 @@ int main(int argc, char** argv) try {
   // 3. The pin: a spherical joint between the root control point (the rod's end, interpolated by
   //    the open knot vector) and the ground's origin.
   solvers::ConstraintList joints;
-  //    (Spelled out: `Attachment{root, {}}` would value-initialize nothing — Eigen's default
-  //    constructor leaves the offset uninitialized.)
   joints.push_back(std::make_unique<joints::SphericalJoint>(
       joints::Attachment{.node = root, .offset = Eigen::Vector3d::Zero()},
       joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, model.state()));

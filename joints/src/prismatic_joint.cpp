@@ -60,4 +60,18 @@ void PrismaticJoint::acceleration_terms(const core::Configuration& q,
   if (rotation_lock_) c.segment<3>(2) = rotation_lock_->acceleration_terms(q, velocity);
 }
 
+double PrismaticJoint::stroke(const core::Configuration& q) const {
+  // d = n₁ × n₂, since n₂ = d × n₁ (line_normals).
+  const Eigen::Vector3d direction = normals_.row(0).transpose().cross(normals_.row(1).transpose());
+  return (point_.position(q) - line_point_).dot(direction);
+}
+
+double PrismaticJoint::stroke_rate(const core::Configuration& q, const Eigen::VectorXd& velocity) const {
+  const Eigen::Vector3d direction = normals_.row(0).transpose().cross(normals_.row(1).transpose());
+  const JointFrame& f = point_.frame();
+  const Eigen::Vector3d rate = velocity.segment<3>(q.blocks[f.node].offset) +
+                               q.rotation[f.node] * f.angular_velocity(q, velocity).cross(point_.offset());
+  return rate.dot(direction);
+}
+
 }  // namespace spar::joints

@@ -17,6 +17,8 @@
 #include "round_off.hpp"
 #include "system_assembly.hpp"
 
+#include <Eigen/LU>
+
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -98,6 +100,7 @@ struct GeneralizedAlpha::Implementation {
   double initial_energy = 0.0, external_work = 0.0;
   Eigen::VectorXd last_work_force;
   std::vector<std::pair<double, std::string>> events;
+  InitialAssembly assembly_report;
 
   Implementation(core::Model& m, ConstraintList c, const DynamicOptions& o)
       : model(m),
@@ -117,6 +120,10 @@ struct GeneralizedAlpha::Implementation {
 
   static GeneralizedAlphaParameters validated_parameters(const DynamicOptions& options) {
     const char* where = "solvers::GeneralizedAlpha";
+    if (!(options.initial_assembly_tolerance >= 0.0) || !(options.initial_velocity_stiffness_time >= 0.0) ||
+        !std::isfinite(options.initial_velocity_stiffness_time))
+      throw Error("initial_assembly_tolerance and initial_velocity_stiffness_time must be >= 0 and finite", where,
+                  "fix the DynamicOptions");
     if (!(options.time_step > 0.0) || !std::isfinite(options.time_step))
       throw Error("time step must be positive and finite", where, "give DynamicOptions::time_step > 0");
     if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance) || options.max_iterations < 1 ||
@@ -190,6 +197,12 @@ struct GeneralizedAlpha::Implementation {
       std::ostringstream what;
       what << "the iteration matrix is singular at t = " << time << " (step " << counters.steps + 1
            << "): " << error.what();
+      const std::string massless = beams_without_inertia();
+      if (!massless.empty())
+        throw Error(what.str() + "; " + massless + " no section inertia (zero mass per length or a singular "
+                        "rotary inertia): its freedoms have no mass",
+                    "solvers::GeneralizedAlpha",
+                    "give the beam BeamParameters::inertia, e.g. core::SectionInertia::from(material, section)");
       throw Error(what.str(), "solvers::GeneralizedAlpha",
                   "check for a redundant constraint (e.g. two joints fixing the same freedom) or a "
                   "freedom with neither mass nor constraint (e.g. a beam without section inertia, "
@@ -199,13 +212,32 @@ struct GeneralizedAlpha::Implementation {
     have_factorization = true;
   }
 
+  /// "beam 0 has" / "beams 0, 2 have" for the model's beams whose section inertia leaves freedoms
+  /// without mass (zero ρA or a singular rotary inertia); empty when there are none.
+  std::string beams_without_inertia() const {
+    std::vector<int> beams;
+    for (int b = 0; b < model.beam_count(); ++b) {
+      const core::SectionInertia& inertia = model.beam(b).inertia();
+      if (!(inertia.mass_per_length > 0.0) || !(std::abs(inertia.rotary.determinant()) > 0.0)) beams.push_back(b);
+    }
+    if (beams.empty()) return "";
+    std::string list;
+    for (std::size_t i = 0; i < beams.size(); ++i) list += (i ? ", " : "") + std::to_string(beams[i]);
+    return (beams.size() == 1 ? "beam " : "beams ") + list + (beams.size() == 1 ? " has" : " have");
+  }
+
   // Initial conditions ---------------------------------------------------------------------------
 
   /// M v̇₀ + Bᵀλ₀ = −(f_qv + f_int − f_ext), B v̇₀ = −c(q₀, v₀, 0).
   /// The first call starts the run (and its energy balance); a later one restarts the method from
   /// consistent accelerations at the current state, the balance carrying on.
   void initialize() {
-    consistent_accelerations();
+    if (!initialized && options.initial_assembly) {
+      assemble_initial_state();
+      consistent_accelerations(true);
+    } else {
+      consistent_accelerations(false);
+    }
     if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
     evaluate(t, nullptr, 1.0);
     // The balance starts at t = 0 with the consistent accelerations.
@@ -237,10 +269,12 @@ struct GeneralizedAlpha::Implementation {
   /// v̇ and λ consistent with the equations at the current (q, v, t), and a = v̇: the method's
   /// start at t = 0, and its restart after an event changed the equations.
   /// M v̇ + Bᵀλ = −(f_qv + f_int − f_ext), B v̇ = −c(q, v, t).
-  void consistent_accelerations() {
+  /// `factorized`: [M Bᵀ; B 0] is factorized at the current state and the residual holds
+  /// [r ; Φ] with v̇ = 0, λ = 0 at the current v (what assemble_initial_state leaves).
+  void consistent_accelerations(bool factorized) {
     acceleration.setZero();
     lambda.setZero();
-    factorize_mass_and_constraints();
+    if (!factorized) factorize_mass_and_constraints();
     const int n = assembly.dof_count();
     solution = -assembly.residual();
     constraint_terms(solution, [&](const joints::Constraint& c, Eigen::Ref<Eigen::VectorXd> out) {
@@ -258,30 +292,50 @@ struct GeneralizedAlpha::Implementation {
                   "check the model's masses, loads and velocities for NaN or infinite values");
   }
 
-  /// After an event that changed the constraint equations (an end stop locking a slider), the
-  /// state may violate the new constraints (the slider passed its stop within the step) and move
-  /// against them. Projects the positions onto Φ = 0 and the velocities onto B v + Φ_t = 0 in the
-  /// metric of the mass matrix — the perfectly plastic impact the event stands for, whose energy
-  /// loss shows in the numerical dissipation — and restarts from consistent accelerations
-  /// (docs/dynamics.md, "Events"). Without it the index-3 method meets the new constraint within
-  /// one step and its velocity rings, gaining energy.
-  void project_onto_constraints() {
+  /// Moves the positions onto Φ(q, t) = 0 by Gauss–Newton on the least change in the metric of
+  /// M: with d the change so far, [M Bᵀ; B 0] [Δ; μ] = [−M d; −Φ] (docs/dynamics.md D6b), whose
+  /// fixed point is the KKT point of min ½ dᵀM d subject to Φ(q ⊕ d) = 0. Leaves [M Bᵀ; B 0]
+  /// factorized at the final state with the residual [r ; Φ] at v̇ = 0, λ = 0. Returns the
+  /// iterations; `change` accumulates d. spar::Error (the state restored) when it does not converge
+  /// in max_iterations; `what` names the occasion for it.
+  int project_positions(Eigen::VectorXd& change, const std::string& what) {
     const int n = assembly.dof_count(), m = assembly.multiplier_count();
+    const core::Configuration given = model.state();
+    acceleration.setZero();
+    lambda.setZero();
+    change = Eigen::VectorXd::Zero(n);
     for (int iteration = 0;; ++iteration) {
       factorize_mass_and_constraints();
-      if (constraint_norm() <= options.constraint_tolerance) break;
-      if (iteration == options.max_iterations)
-        throw Error("the configuration could not be projected onto the constraints after the event "
-                    "at t = " + std::to_string(t) + " (|Phi| = " + std::to_string(constraint_norm()) + ")",
-                    "solvers::GeneralizedAlpha", "check the event's new constraint: it should be "
-                    "reachable from the state where the event happened");
-      // [M Bᵀ; B 0] [Δ; μ] = [0; −Φ]: the M-orthogonal correction (Gauss–Newton).
-      solution.setZero();
+      if (constraint_norm() <= options.constraint_tolerance) return iteration;
+      if (iteration == options.max_iterations || !assembly.residual().allFinite()) {
+        const double residual = constraint_norm();
+        model.state() = given;
+        evaluate(t, nullptr, 1.0);
+        throw Error("the configuration could not be projected onto the constraints " + what + " at t = " +
+                        std::to_string(t) + " (|Phi| = " + std::to_string(residual) + " after " +
+                        std::to_string(iteration) + " iterations)",
+                    "solvers::GeneralizedAlpha",
+                    "check that the constraints can hold together at this state (joint positions, axes and "
+                    "drivers' angles at t = " + std::to_string(t) + ")");
+      }
+      Eigen::VectorXd state = Eigen::VectorXd::Zero(assembly.size());
+      state.head(n) = change;
+      solution = assembly.pattern().matrix() * state;
+      solution.head(n) = -solution.head(n);
       solution.tail(m) = -assembly.residual().tail(m);
+      for (int dof : model.fixed_dofs()) solution(dof) = 0.0;
       solver->solve(solution);
+      change += solution.head(n);
       model.state().apply_increment(solution.head(n));
     }
-    // [M Bᵀ; B 0] [Δv; μ] = [0; −(B v + Φ_t)], B v read off the assembled matrix.
+  }
+
+  /// The least change of the velocities in the metric of M onto B v + Φ_t = 0:
+  /// [M Bᵀ; B 0] [Δv; μ] = [0; −(B v + Φ_t)], with B v read off the factorized matrix
+  /// (project_positions leaves it at the current state). Returns Δv; `violation` gets
+  /// ‖B v + Φ_t‖∞ before.
+  Eigen::VectorXd project_velocities(double& violation) {
+    const int n = assembly.dof_count(), m = assembly.multiplier_count();
     Eigen::VectorXd state = Eigen::VectorXd::Zero(assembly.size());
     state.head(n) = velocity;
     solution = assembly.pattern().matrix() * state;
@@ -291,12 +345,84 @@ struct GeneralizedAlpha::Implementation {
       c.time_derivative(model.state(), t, phi_t);
       out = -(out + phi_t);
     });
+    violation = m ? solution.tail(m).lpNorm<Eigen::Infinity>() : 0.0;
     solver->solve(solution);
-    velocity += solution.head(n);
-    for (int dof : model.fixed_dofs()) velocity(dof) = 0.0;
-    consistent_accelerations();
+    Eigen::VectorXd change = solution.head(n);
+    for (int dof : model.fixed_dofs()) change(dof) = 0.0;
+    velocity += change;
+    return change;
+  }
+
+  /// After an event that changed the constraint equations (an end stop locking a slider), the
+  /// state may violate the new constraints (the slider passed its stop within the step) and move
+  /// against them. Projects the positions onto Φ = 0 and the velocities onto B v + Φ_t = 0 in the
+  /// metric of the mass matrix — the perfectly plastic impact the event stands for, whose energy
+  /// loss shows in the numerical dissipation — and restarts from consistent accelerations
+  /// (docs/dynamics.md, "Events"). Without it the index-3 method meets the new constraint within
+  /// one step and its velocity rings, gaining energy.
+  void project_onto_constraints() {
+    Eigen::VectorXd change;
+    double violation = 0.0;
+    project_positions(change, "after the event");
+    project_velocities(violation);
+    consistent_accelerations(false);
     evaluate(t, nullptr, 1.0);
     last_work_force = work_force();
+  }
+
+  /// The initial assembly (DynamicOptions::initial_assembly): positions, then velocities, onto
+  /// the constraints by least change in the metric of M; the report in `assembly_report`. Leaves
+  /// [M Bᵀ; B 0] factorized and the residual [r ; Φ] at v̇ = 0, λ = 0 at the assembled state.
+  void assemble_initial_state() {
+    InitialAssembly& report = assembly_report;
+    report = InitialAssembly{};
+    report.performed = true;
+    const core::Configuration given = model.state();
+    // Φ of the state as given, before any change.
+    for (const auto& constraint : constraints) {
+      Eigen::VectorXd phi(constraint->equation_count());
+      constraint->value(model.state(), t, phi);
+      if (phi.size()) report.constraint_residual = std::max(report.constraint_residual, phi.lpNorm<Eigen::Infinity>());
+    }
+    report.position_iterations = project_positions(report.position_change, "by the initial assembly");
+    const Eigen::VectorXd& units = options.increment_units;
+    for (int b = 0; b < model.state().block_count(); ++b) {
+      const core::Block& block = model.state().blocks[b];
+      for (int i = block.offset; i < block.offset + block.size; ++i) {
+        const double change = std::abs(report.position_change(i)) / (units.size() ? units(i) : 1.0);
+        if (change > report.largest_position_change) {
+          report.largest_position_change = change;
+          report.largest_position_change_block = b;
+        }
+      }
+    }
+    if (report.largest_position_change > options.initial_assembly_tolerance) {
+      model.state() = given;
+      evaluate(t, nullptr, 1.0);
+      std::ostringstream what;
+      what << "the initial assembly would move block " << report.largest_position_change_block << " by "
+           << report.largest_position_change << " (|Phi| = " << report.constraint_residual
+           << " as given), more than initial_assembly_tolerance = " << options.initial_assembly_tolerance;
+      throw Error(what.str(), "solvers::GeneralizedAlpha::initialize",
+                  "place the bodies and joints consistently (check the joints' points and the "
+                  "drivers' angles at t = 0), or raise DynamicOptions::initial_assembly_tolerance");
+    }
+    const double tau = options.initial_velocity_stiffness_time;
+    if (tau > 0.0) {  // [M + τ²K, Bᵀ; B 0] for the velocities, [M Bᵀ; B 0] again for v̇ below
+      const MatrixCoefficients weighted{.mass = 1.0, .damping = 0.0, .stiffness = tau * tau};
+      evaluate(t, &weighted, 1.0, true);
+      factorize(t);
+      have_factorization = false;
+    }
+    report.velocity_change = project_velocities(report.velocity_constraint_residual);
+    report.largest_velocity_change =
+        report.velocity_change.size() ? report.velocity_change.lpNorm<Eigen::Infinity>() : 0.0;
+    if (tau > 0.0) {
+      factorize_mass_and_constraints();
+    } else if (report.largest_velocity_change > 0.0) {
+      // The residual [r ; Φ] depends on v (gyroscopic and damping forces): evaluated again.
+      evaluate(t, nullptr, 1.0);
+    }
   }
 
   double mechanical_energy() const {
@@ -611,7 +737,7 @@ struct GeneralizedAlpha::Implementation {
     if (equations_changed) {
       project_onto_constraints();  // a new equation: onto it, then a consistent restart
     } else if (event) {
-      consistent_accelerations();
+      consistent_accelerations(false);
       evaluate(t, nullptr, 1.0);
       last_work_force = work_force();
     }
@@ -738,8 +864,24 @@ const Eigen::VectorXd& GeneralizedAlpha::velocity() const { return impl_->veloci
 const Eigen::VectorXd& GeneralizedAlpha::acceleration() const { return impl_->acceleration; }
 const Eigen::VectorXd& GeneralizedAlpha::multipliers() const { return impl_->lambda; }
 const DynamicCounters& GeneralizedAlpha::counters() const { return impl_->counters; }
+int GeneralizedAlpha::constraint_count() const { return static_cast<int>(impl_->constraints.size()); }
+
+const joints::Constraint& GeneralizedAlpha::constraint(int c) const {
+  if (c < 0 || c >= constraint_count())
+    throw Error("constraint " + std::to_string(c) + " does not exist (" + std::to_string(constraint_count()) +
+                    " constraints)",
+                "solvers::GeneralizedAlpha::constraint", "give an index into the constructor's constraint list");
+  return *impl_->constraints[c];
+}
+
+Eigen::VectorXd GeneralizedAlpha::multipliers(int c) const {
+  const int m = constraint(c).equation_count();
+  return impl_->lambda.segment(impl_->assembly.first_multiplier(c), m);
+}
 int GeneralizedAlpha::multiplier_count() const { return impl_->assembly.multiplier_count(); }
 int GeneralizedAlpha::last_step_iterations() const { return impl_->last_iterations; }
+
+const InitialAssembly& GeneralizedAlpha::initial_assembly() const { return impl_->assembly_report; }
 
 double GeneralizedAlpha::constraint_residual() const {
   double norm = 0.0;

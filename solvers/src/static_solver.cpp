@@ -153,7 +153,9 @@ StaticReport solve_static(core::Model& model, const StaticOptions& options,
   // factor's ulp and the loop never ending.
   int halvings = 0;
   while (converged_factor < 1.0) {
-    const double target = std::min(1.0, converged_factor + increment);
+    // The last increment lands on 1 exactly: ten steps of 0.1 sum to 0.9999999999999999, which
+    // took an eleventh step of 1e-16 (issue 14: StaticReport::steps had one entry too many).
+    const double target = 1.0 - converged_factor <= increment * (1 + 1e-9) ? 1.0 : converged_factor + increment;
     const core::Configuration converged = model.state();
     const Eigen::VectorXd converged_lambda = newton.multipliers();
     StaticStep step;

@@ -13,13 +13,21 @@
 
 namespace spar::joints {
 
+/// A 3-vector that starts at zero: `Offset{}` is (0, 0, 0), where Eigen's default constructor
+/// leaves a Vector3d's entries uninitialized (so `Attachment{node, {}}` once gave a garbage offset).
+/// Converts from any Eigen 3-vector expression and is used as an Eigen::Vector3d.
+struct Offset : Eigen::Vector3d {
+  Offset() : Eigen::Vector3d(Eigen::Vector3d::Zero()) {}
+  template <class Derived>
+  Offset(const Eigen::MatrixBase<Derived>& v) : Eigen::Vector3d(v) {}  // NOLINT: implicit by design
+};
+
 /// A point fixed in a frame block's material frame (node ≥ 0: p = x + R·offset, offset material),
 /// or a fixed inertial point of the ground (node = −1: p = offset, offset inertial).
-/// Write `Attachment{node}` for the node itself: `Attachment{node, {}}` value-initializes the
-/// offset with Eigen's default constructor, which leaves it uninitialized.
+/// `Attachment{node}` and `Attachment{node, {}}` are the node itself (offset zero).
 struct Attachment {
   int node = -1;
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  Offset offset;
 
   bool on_ground() const { return node < 0; }
 };

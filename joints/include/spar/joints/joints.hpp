@@ -12,6 +12,7 @@
 #include <spar/joints/point_kinematics.hpp>
 #include <spar/joints/position_driver.hpp>
 #include <spar/joints/prismatic_joint.hpp>
+#include <spar/joints/reaction.hpp>
 #include <spar/joints/sliding_joint.hpp>
 #include <spar/joints/revolute_joint.hpp>
 #include <spar/joints/spherical_joint.hpp>

@@ -41,6 +41,12 @@ class PrismaticJoint final : public Constraint {
   void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
                           Eigen::Ref<Eigen::VectorXd> c) const override;
 
+  /// The stroke s = (p_a − c)·d along the unit line direction d from the line point c [m]
+  /// (docs/joints.md §5).
+  double stroke(const core::Configuration& q) const;
+  /// ṡ = ṗ_a·d, ṗ_a = ẋ + R(Ω × a) [m/s].
+  double stroke_rate(const core::Configuration& q, const Eigen::VectorXd& velocity) const;
+
  private:
   std::vector<int> nodes_;
   AttachedPoint point_;

@@ -6,6 +6,7 @@
 #include <spar/joints/attachment.hpp>
 #include <spar/joints/constraint.hpp>
 #include <spar/joints/point_kinematics.hpp>
+#include <spar/joints/reaction.hpp>
 #include <spar/joints/vector_kinematics.hpp>
 
 #include <array>
@@ -41,6 +42,25 @@ class RevoluteJoint final : public Constraint {
   void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
                           Eigen::Ref<Eigen::VectorXd> c) const override;
 
+  // Joint-level outputs (docs/joints.md §5).
+
+  /// The hinge point p_b (inertial; p_a = p_b when Φ holds).
+  Eigen::Vector3d point(const core::Configuration& q) const;
+  /// The joint's frame, carried by b: columns n₁, n₂ (⊥ the axis at q0) and n = n₁ × n₂ (the
+  /// axis), inertial components.
+  Eigen::Matrix3d frame(const core::Configuration& q) const;
+  /// The rotation φ of a relative to b about the axis since q0, right-handed about n, in (−π, π]
+  /// [rad]: a's copy of n₁ is at cos φ n₁ + sin φ n₂.
+  double relative_angle(const core::Configuration& q) const;
+  /// φ̇ = (ω_a − ω_b)·n with ω = R Ω the inertial angular velocities (zero on the ground) [rad/s].
+  double relative_rate(const core::Configuration& q, const Eigen::VectorXd& velocity) const;
+  /// The reaction the joint exerts on a (on b: the opposite), about the hinge point, in the
+  /// joint's frame (n₁, n₂, n): force [N] and moment [N m] (the moment's n component is zero — the
+  /// hinge is frictionless — up to the rotation of a relative to b out of the axis). λ are the
+  /// joint's 5 multipliers. With a on the ground, still the reaction on a: minus that on b.
+  Wrench reaction_in_frame(const core::Configuration& q, double t,
+                           const Eigen::Ref<const Eigen::VectorXd>& lambda) const;
+
  private:
   RevoluteJoint(const Attachment& a, const Attachment& b, const Eigen::Vector3d& axis,
                 const JointFrames& frames, const core::Configuration& q0);
@@ -48,6 +68,10 @@ class RevoluteJoint final : public Constraint {
   std::vector<int> nodes_;
   PointCoincidence points_;
   std::array<DotProduct, 2> axis_products_;
+  // The outputs' kinematics: b's point, a's copies of the axis and of n₁, b's copies of n₁, n₂.
+  AttachedPoint point_b_;
+  AttachedVector axis_a_, normal_a_;
+  std::array<AttachedVector, 2> normals_b_;
 };
 
 }  // namespace spar::joints

@@ -49,7 +49,9 @@ struct DynamicOptions {
   double spectral_radius = 0.9;  ///< ρ∞; 1 = no numerical dissipation
   IterationMatrix iteration_matrix = IterationMatrix::update;
   /// 003 §5.1: converged when ‖[Δq, h²βΔλ]‖² ≤ tolerance — a *squared* norm, Δq in m and rad
-  /// (or each block's own unit when `increment_units` is set)…
+  /// (or each block's own unit when `increment_units` is set): the default 1e-6 accepts a last
+  /// Newton increment of up to 1e-3 m or rad (the iterate itself is then far closer, Newton
+  /// converging quadratically); for increments below δ give δ²…
   double tolerance = 1e-6;
   /// Optional unit of each increment entry (global tangent layout, dof_count entries): the
   /// convergence test divides Δq by it, so metres, radians, slopes and curve parameters are
@@ -73,11 +75,50 @@ struct DynamicOptions {
   bool locate_events = true;
   double event_tolerance = 1e-6;
   core::AssemblyExecution assembly = core::AssemblyExecution::serial;
+  /// Consistent initial assembly by the first initialize() (docs/dynamics.md, "Initial
+  /// assembly"): the positions are moved onto Φ(q, t₀) = 0 and the velocities onto
+  /// B v + Φ_t = 0, each by the least change in the metric of the mass matrix; what changed is
+  /// reported by GeneralizedAlpha::initial_assembly(). Off: the run starts from the state as given
+  /// (an inconsistent start is then snapped onto the constraints by the first step).
+  bool initial_assembly = true;
+  /// The largest position change the initial assembly may make, ‖Δq‖∞ over the increments (m for
+  /// translations, rad for rotations, each vector entry in its own unit, or divided by
+  /// `increment_units` when given). A larger one is a spar::Error and leaves the state as given:
+  /// a joint placed that far off is a modelling error, not a start to be snapped shut.
+  double initial_assembly_tolerance = 1e-3;
+  /// τ [s] of the metric M + τ²K in which the initial assembly projects the velocities (K the
+  /// tangent stiffness at the assembled state). 0: the mass metric, the least change of kinetic
+  /// energy — the velocities an impulse through the constraints gives (a driver started from
+  /// rest spins its own node and leaves the rest of a flexible body behind, which then rings).
+  /// τ well above the period of the slowest elastic mode makes deformation rates expensive: the
+  /// projection then gives the bodies the rigid motion the constraints allow (to ~1/(τω)²).
+  double initial_velocity_stiffness_time = 0.0;
+};
+
+/// What the initial assembly changed (DynamicOptions::initial_assembly).
+struct InitialAssembly {
+  bool performed = false;                 ///< false when switched off (or before initialize())
+  int position_iterations = 0;            ///< Gauss–Newton iterations onto Φ = 0 (0: already there)
+  double constraint_residual = 0.0;       ///< ‖Φ(q₀, t₀)‖∞ of the state as given
+  double velocity_constraint_residual = 0.0;  ///< ‖B v₀ + Φ_t‖∞ of the velocities as given
+  /// The position change Δq, global tangent layout (q ← q₀ ⊕ Δq up to round-off: the sum of the
+  /// Gauss–Newton increments).
+  Eigen::VectorXd position_change;
+  /// ‖Δq‖∞ in the units of the tolerance (see DynamicOptions::initial_assembly_tolerance), and the
+  /// block where it happened (−1: none moved).
+  double largest_position_change = 0.0;
+  int largest_position_change_block = -1;
+  /// The velocity change Δv (global tangent layout: ẋ inertial, Ω material) and ‖Δv‖∞.
+  Eigen::VectorXd velocity_change;
+  double largest_velocity_change = 0.0;
 };
 
 /// What a run did.
 struct DynamicCounters {
-  long steps = 0;                 ///< completed steps (a cut step counts its sub-steps)
+  /// Completed steps, sub-steps included: a user step() halved once counts 2 (the halvings are
+  /// in `cutbacks`), so steps − cutbacks is the number of step() calls that completed (as long as
+  /// none threw: a failed call keeps its cut-backs, not its sub-steps).
+  long steps = 0;
   long newton_iterations = 0;     ///< linear solves
   long jtheta_evaluations = 0;    ///< iterations that evaluated the rotational block J_θ
   long factorizations = 0;        ///< numeric factorizations
@@ -117,8 +158,11 @@ public:
   void set_velocity(int node, const Eigen::Vector3d& linear, const Eigen::Vector3d& angular);
   /// Sets any block's initial velocity (before the first step), in the block's tangent layout.
   void set_velocity(int block, const Eigen::VectorXd& velocity);
-  /// Computes consistent initial accelerations and multipliers from M v̇ + Bᵀλ = −f and
-  /// B v̇ = −c. Done by the first step() if not called. Called again during a run (after a remap
+  /// The first call assembles the initial state (DynamicOptions::initial_assembly: positions
+  /// onto Φ = 0, velocities onto B v + Φ_t = 0, least change in the mass metric; spar::Error
+  /// when the positions would move by more than initial_assembly_tolerance or do not converge,
+  /// the state then left as given), then computes consistent initial accelerations and
+  /// multipliers from M v̇ + Bᵀλ = −f and B v̇ = −c. Done by the first step() if not called. Called again during a run (after a remap
   /// whose map P does not carry the accelerations, e.g. an ALE re-mesh), it restarts the method
   /// from consistent accelerations at the current state; the energy balance carries on, and a
   /// jump of the energy at the re-mesh shows in the numerical dissipation.
@@ -135,6 +179,14 @@ public:
   const Eigen::VectorXd& acceleration() const;
   /// The Lagrange multipliers λ (constraint forces), constraint by constraint.
   const Eigen::VectorXd& multipliers() const;
+  /// The multipliers of constraint `c` (its equation_count() entries), in the order of the
+  /// constructor's list; with joints::reaction or a joint's reaction_in_frame they give the
+  /// joint's reaction (docs/joints.md §5). spar::Error for a constraint that does not exist.
+  Eigen::VectorXd multipliers(int c) const;
+  /// Constraint `c` of the constructor's list (the integrator owns them), e.g. to read a joint's
+  /// coordinates: dynamic_cast<const joints::RevoluteJoint&>(integrator.constraint(0)).
+  const joints::Constraint& constraint(int c) const;
+  int constraint_count() const;
   const DynamicCounters& counters() const;
   int multiplier_count() const;
   /// Newton iterations of the last completed step.
@@ -143,6 +195,8 @@ public:
   double constraint_residual() const;
   /// The energies at the current state and the balance since t = 0.
   Energies energies() const;
+  /// What the initial assembly of the first initialize() changed.
+  const InitialAssembly& initial_assembly() const;
 
   /// Structure changes (docs/model.md, "Structure changes"). The integrator rebuilds its sparse
   /// pattern and symbolic factorization by itself after a step in which a constraint's

@@ -1,0 +1,26 @@
+# Script mode: run EXAMPLE with ARGS and --out OUT, read the JSON object on its last stdout line,
+# and check each BOUNDS entry "key<value" or "key>value" (numbers compared by CMake's LESS and
+# GREATER). A failed bound fails the test, with the summary shown.
+file(REMOVE_RECURSE ${OUT})
+execute_process(COMMAND ${EXAMPLE} ${ARGS} --out ${OUT} RESULT_VARIABLE status OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "the example failed (${status}):\n${out}\n${err}")
+endif()
+string(STRIP "${out}" out)
+string(REGEX REPLACE "^.*\n" "" summary "${out}")
+message(STATUS "${summary}")
+foreach(bound IN LISTS BOUNDS)
+  if(NOT bound MATCHES "^([a-z_0-9]+)([<>])(.+)$")
+    message(FATAL_ERROR "malformed bound '${bound}': write key<value or key>value")
+  endif()
+  set(key ${CMAKE_MATCH_1})
+  set(relation ${CMAKE_MATCH_2})
+  set(limit ${CMAKE_MATCH_3})
+  string(JSON value GET "${summary}" ${key})
+  if(relation STREQUAL "<" AND NOT value LESS limit)
+    message(FATAL_ERROR "${key} = ${value}, expected < ${limit}")
+  elseif(relation STREQUAL ">" AND NOT value GREATER limit)
+    message(FATAL_ERROR "${key} = ${value}, expected > ${limit}")
+  endif()
+endforeach()
