@@ -220,6 +220,13 @@ struct GeneralizedAlpha::Implementation {
     evaluate(t, nullptr, 1.0);
     // The balance starts at t = 0 with the consistent accelerations.
     if (!initialized) initial_energy = mechanical_energy();
+    // Finite inputs may still overflow in the energies (a mass of 1e300 kg at z = -1e300 m): the
+    // balance would be NaN from the start (found by tests/input/fuzz_test.cpp).
+    if (!std::isfinite(mechanical_energy()))
+      throw Error("the mechanical energy at t = " + significant(t) + " is not finite (kinetic, strain or gravity "
+                  "potential overflows)",
+                  "solvers::GeneralizedAlpha::initialize",
+                  "check the model's masses, positions, velocities and gravity for absurd magnitudes");
     last_work_force = work_force();
     initialized = true;
   }

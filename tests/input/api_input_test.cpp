@@ -167,6 +167,17 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
          iga::NurbsCurve<3>(U, points, Eigen::Vector3d(4.9406564584124654e-324, 1, 1)).derivatives(0.0, 2);
        },
        "overflow at u = 0"},
+      {"a body whose gravity potential overflows (1e300 kg at z = -1e300 m)",
+       [] {
+         core::Model m;
+         auto p = top();
+         p.mass = 1e300;
+         p.center_of_mass.z() = -1e300;
+         m.fix(m.rigid_body(m.add_rigid_body(p)).node);
+         m.set_gravity(Eigen::Vector3d(0, 0, -9.81));
+         solvers::GeneralizedAlpha(m, {}, {}).initialize();
+       },
+       "mechanical energy at t = 0 is not finite"},
       {"a rotation with 1e-7 noise prints the size of the noise",
        [] {
          Eigen::Matrix3d R = Eigen::Matrix3d::Identity();

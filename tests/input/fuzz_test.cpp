@@ -3,8 +3,9 @@
 // <= 0, out-of-range counts) go through the public API, which must end each call in a spar::Error
 // or a finite result — never another exception, a crash or a hang — and where it succeeds the
 // result must keep its defining property (a refined curve is the same curve; a solved model has a
-// finite state and finite energies). Deterministic: SPAR_FUZZ_SEED and SPAR_FUZZ_RUNS (runs per
-// target) change the seed and the length (docs/errors.md); the defaults keep the suite at seconds.
+// finite state and finite energies). Deterministic: SPAR_FUZZ_SEED, SPAR_FUZZ_RUNS (spline runs;
+// the model target runs a fiftieth of them) and SPAR_FUZZ_MODEL_RUNS change the seed and the
+// lengths (docs/errors.md); the defaults keep the suite at about a second.
 #include <spar/core/core.hpp>
 #include <spar/iga/iga.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
@@ -183,7 +184,7 @@ TEST_CASE("fuzzed spline inputs end in a spar::Error or a finite, unchanged curv
 
 TEST_CASE("fuzzed models end in a spar::Error or a finite solved state", "[fuzz]") {
   const auto seed = static_cast<unsigned>(environment_number("SPAR_FUZZ_SEED", 15));
-  const long runs = environment_number("SPAR_FUZZ_RUNS", 20000) / 50;
+  const long runs = environment_number("SPAR_FUZZ_MODEL_RUNS", environment_number("SPAR_FUZZ_RUNS", 20000) / 50);
   Fuzzer f(seed);
   long solved = 0;
   for (long run = 0; run < runs; ++run) {
