@@ -24,6 +24,7 @@
 #include <spar/spar.hpp>
 
 #include <cli.hpp>
+#include <static_stability.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -89,6 +90,7 @@ int main(int argc, char** argv) try {
   // 4. Solve (one load step suffices for this small deflection; Newton converges quadratically).
   const auto start = std::chrono::steady_clock::now();
   const solvers::StaticReport report = solvers::solve_static(model, {.load_steps = 1});
+  examples::warn_if_unstable(report);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // 5. The tip deflection.
@@ -133,6 +135,7 @@ int main(int argc, char** argv) try {
       .add("element", element).add("force", force).add("elements", elements).add("poisson", poisson)
       .add("section", section_kind).add("remedy", remedy).add("tip_deflection", deflection).add("euler_bernoulli", theory)
       .add("ratio", deflection / theory).add("newton_iterations", report.newton_iterations).add("wall_s", wall)
+      .add("unstable_directions", report.unstable_directions)
       .print();
   return 0;
 } catch (const std::exception& error) {

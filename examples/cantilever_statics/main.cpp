@@ -19,6 +19,7 @@
 #include <spar/spar.hpp>
 
 #include <cli.hpp>
+#include <static_stability.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -100,6 +101,7 @@ int main(int argc, char** argv) try {
   // 4. Solve.
   const core::Configuration undeformed_state = model.state();
   const solvers::StaticReport report = solvers::solve_static(model, {.load_steps = load_steps});
+  examples::warn_if_unstable(report);
 
   // 5. Compare with the analytical solution.
   const Eigen::Vector3d tip_position = model.state().position[tip] - model.state().position[root];
@@ -151,6 +153,7 @@ int main(int argc, char** argv) try {
       .add("reference_tip_y", reference.y()).add("relative_tip_error", error)
       .add("load_steps", static_cast<int>(report.steps.size()))
       .add("newton_iterations", report.newton_iterations).add("wall_s", report.wall_seconds)
+      .add("unstable_directions", report.unstable_directions)
       .print();
   return 0;
 } catch (const std::exception& error) {
