@@ -46,13 +46,7 @@ struct Range {
   }
   /// The interval as the message shows it, e.g. "(0, 1]" or "[-0.999, 0.5)".
   std::string text() const {
-    return std::string(low_open ? "(" : "[") + shown(low) + ", " + shown(high) + (high_open ? ")" : "]");
-  }
-  /// A number with 6 significant digits ("1e-09", "-1e-09", "0.33"), never rounded to "0.000000".
-  static std::string shown(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", value);
-    return buffer;
+    return std::string(low_open ? "(" : "[") + significant(low) + ", " + significant(high) + (high_open ? ")" : "]");
   }
 };
 
@@ -66,8 +60,9 @@ inline constexpr Range newton_tolerances{0.0, 1e-2, true, false};
 /// (cantilever_statics) and 53 kB (slider_crank, two rods per --elements; docs/errors.md).
 inline constexpr double bytes_per_element = 1e5;
 
-/// The most steps a time span may take (t_end/h): far above every paper's run (3·10⁴ to 10⁶), low
-/// enough that a mistyped step ends at once instead of running for days.
+/// The most steps a time span may take (t_end/h): far above the examples' runs (400 to 3·10⁴ steps
+/// by default, 10⁵ RK4 steps for heavy_top's reference), low enough that a mistyped step ends at
+/// once instead of running for days.
 inline constexpr double max_time_steps = 1e7;
 
 /// The number of steps of size h that reach t_end, or a spar::Error naming the options when h and
@@ -76,21 +71,22 @@ inline long time_steps(double h, double t_end, const std::string& h_name = "--h"
                        const std::string& t_end_name = "--t-end") {
   const std::string where = "options " + h_name + ", " + t_end_name;
   if (!(std::isfinite(h) && h > 0.0 && std::isfinite(t_end) && t_end > 0.0))
-    throw Error(h_name + " = " + Range::shown(h) + " and " + t_end_name + " = " + Range::shown(t_end) +
+    throw Error(h_name + " = " + significant(h) + " and " + t_end_name + " = " + significant(t_end) +
                     " must be positive finite times", where, "give e.g. " + h_name + " 1e-3 " + t_end_name + " 1");
   if (h > t_end * (1 + 1e-12))
-    throw Error("the step " + h_name + " = " + Range::shown(h) + " s is longer than the span " + t_end_name +
-                    " = " + Range::shown(t_end) + " s: no step would be taken",
+    throw Error("the step " + h_name + " = " + significant(h) + " s is longer than the span " + t_end_name +
+                    " = " + significant(t_end) + " s: no step would be taken",
                 where, "give a step no longer than the end time");
   const double steps = std::ceil(t_end / h - 1e-9);
   if (steps > max_time_steps)
-    throw Error(t_end_name + " / " + h_name + " = " + Range::shown(steps) + " steps, more than the " +
-                    Range::shown(max_time_steps) + " a run may take",
+    throw Error(t_end_name + " / " + h_name + " = " + significant(steps) + " steps, more than the " +
+                    significant(max_time_steps) + " a run may take",
                 where, "raise " + h_name + " or lower " + t_end_name);
   return static_cast<long>(steps);
 }
 
-/// The physical memory of this machine in bytes (sysconf), the budget of element_limit.
+/// The physical memory of this machine in bytes (sysconf; 4 GB if it cannot say), the budget of
+/// element_limit.
 inline double physical_memory() {
   const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
   return pages > 0 && page_size > 0 ? static_cast<double>(pages) * static_cast<double>(page_size) : 4e9;
@@ -130,7 +126,7 @@ public:
   /// A real number in `range` (default: any finite number). NaN is always refused; an infinity
   /// only when the default is that same infinity (it then means "off", e.g. a tolerance).
   double number(const std::string& name, double fallback, const std::string& help, Range range = {}) {
-    describe(name, Range::shown(fallback), help, range.text());
+    describe(name, significant(fallback), help, range.text());
     check_default(name, fallback, range);
     const auto it = given_.find(name);
     if (it == given_.end()) return fallback;
@@ -227,7 +223,7 @@ private:
   /// A default outside its own range is the example's mistake, caught the first time it runs.
   static void check_default(const std::string& name, double fallback, const Range& range) {
     if (!std::isnan(fallback) && (std::isinf(fallback) || range.contains(fallback))) return;
-    throw Error("the default " + Range::shown(fallback) + " is outside the range " + range.text(),
+    throw Error("the default " + significant(fallback) + " is outside the range " + range.text(),
                 "option " + name, "the example must give a default inside its range");
   }
 

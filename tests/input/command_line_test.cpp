@@ -154,7 +154,7 @@ TEST_CASE("--help lists each option's accepted values and creates no folder", "[
 }
 
 TEST_CASE("ranges print with significant digits", "[cli]") {
-  CHECK(Range::shown(-1e-9) == "-1e-09");
+  CHECK(spar::significant(-1e-9) == "-1e-09");
   CHECK(Range::between(-1, 0.5).text() == "[-1, 0.5]");
   CHECK(Range{-1, 0.5, true, true}.text() == "(-1, 0.5)");
 }
