@@ -24,11 +24,11 @@
 #include <spar/spar.hpp>
 
 #include <cli.hpp>
+#include <static_stability.hpp>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <numbers>
 
@@ -37,23 +37,19 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "ancf_cantilever: paper 001's static cantilever (Table 1)");
-  const std::string element = cli.text("--element", "24", "24 | 30 (ANCF coordinates per element) | gebt");
-  const std::string force = cli.text("--force", "gerstmayr", "invariant (method I) | gerstmayr (method II)");
-  const int elements = cli.integer("--elements", 8, "number of elements");
-  const double poisson = cli.number("--poisson", 0.33, "Poisson's ratio");
-  const std::string section_kind = cli.text("--section", "exact", "exact (moments to order 4) | paper (A, I only)");
-  const std::string remedy = cli.text("--remedy", "none", "Poisson locking remedy: none | uniaxial-bending");
-  const double tip_force = cli.number("--force-n", 10.0, "tip force [N]");
-  const std::string out = cli.text("--out", "results/ancf_cantilever", "output folder");
+  const std::string element = cli.text("--element", "24", "24 | 30 (ANCF coordinates per element) | gebt",
+                                       {"24", "30", "gebt"});
+  const std::string force = cli.text("--force", "gerstmayr", "invariant (method I) | gerstmayr (method II)",
+                                     {"invariant", "gerstmayr"});
+  const int elements = cli.integer("--elements", 8, "number of elements", 1, examples::element_limit(examples::bytes_per_element));
+  const double poisson = cli.number("--poisson", 0.33, "Poisson's ratio", {-1, 0.5, true, true});
+  const std::string section_kind = cli.text("--section", "exact", "exact (moments to order 4) | paper (A, I only)",
+                                            {"exact", "paper"});
+  const std::string remedy = cli.text("--remedy", "none", "Poisson locking remedy: none | uniaxial-bending",
+                                      {"none", "uniaxial-bending"});
+  const double tip_force = cli.number("--force-n", 10.0, "tip force [N]", examples::Range::between(-1e6, 1e6));
+  const std::string out = cli.output_folder("--out", "results/ancf_cantilever", "output folder");
   if (!cli.finish()) return 0;
-  if (element != "24" && element != "30" && element != "gebt")
-    throw Error("unknown element '" + element + "'", "option --element", "use 24, 30 or gebt");
-  if (force != "invariant" && force != "gerstmayr")
-    throw Error("unknown force method '" + force + "'", "option --force", "use invariant or gerstmayr");
-  if (remedy != "none" && remedy != "uniaxial-bending")
-    throw Error("unknown remedy '" + remedy + "'", "option --remedy", "use none or uniaxial-bending");
-  if (section_kind != "exact" && section_kind != "paper")
-    throw Error("unknown section '" + section_kind + "'", "option --section", "use exact or paper");
 
   // 2. The beam of 001 §6.
   const double length = 1.0, radius = 0.01;
@@ -94,6 +90,7 @@ int main(int argc, char** argv) try {
   // 4. Solve (one load step suffices for this small deflection; Newton converges quadratically).
   const auto start = std::chrono::steady_clock::now();
   const solvers::StaticReport report = solvers::solve_static(model, {.load_steps = 1});
+  examples::warn_if_unstable(report);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   // 5. The tip deflection.
@@ -102,7 +99,6 @@ int main(int argc, char** argv) try {
   const double deflection = (tip_position - Eigen::Vector3d(length, 0, 0)).norm();
 
   // 6. Write the deformed centerline (CSV and HDF5).
-  std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
   const Eigen::MatrixXd centerline = gebt_index >= 0 ? model.beam(gebt_index).sample_centerline(model.state(), samples)
                                                      : core::sample_ancf_centerline(model.state(), ancf, samples);
@@ -139,6 +135,7 @@ int main(int argc, char** argv) try {
       .add("element", element).add("force", force).add("elements", elements).add("poisson", poisson)
       .add("section", section_kind).add("remedy", remedy).add("tip_deflection", deflection).add("euler_bernoulli", theory)
       .add("ratio", deflection / theory).add("newton_iterations", report.newton_iterations).add("wall_s", wall)
+      .add("unstable_directions", report.unstable_directions)
       .print();
   return 0;
 } catch (const std::exception& error) {

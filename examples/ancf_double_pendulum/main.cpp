@@ -28,7 +28,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <numbers>
 
@@ -37,21 +36,20 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "ancf_double_pendulum: paper 001's spatial double pendulum (Table 2)");
-  const std::string element = cli.text("--element", "24", "24 | 30 (ANCF coordinates per element)");
-  const std::string force = cli.text("--force", "gerstmayr", "invariant (method I) | gerstmayr (method II)");
-  const int elements_oa = cli.integer("--elements-oa", 2, "elements on link OA");
-  const int elements_ab = cli.integer("--elements-ab", 5, "elements on link AB");
-  const double h = cli.number("--h", 1e-4, "time step [s]");
-  const double t_end = cli.number("--t-end", 3.0, "end time [s]");
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity");
-  const std::string strategy = cli.text("--iteration-matrix", "update", "update | frozen | modified (modified Newton)");
-  const int record_every = cli.integer("--record-every", 10, "steps between HDF5 records");
-  const std::string out = cli.text("--out", "results/ancf_double_pendulum", "output folder");
+  const std::string element = cli.text("--element", "24", "24 | 30 (ANCF coordinates per element)", {"24", "30"});
+  const std::string force = cli.text("--force", "gerstmayr", "invariant (method I) | gerstmayr (method II)",
+                                     {"invariant", "gerstmayr"});
+  const int elements_oa = cli.integer("--elements-oa", 2, "elements on link OA", 1, examples::element_limit(examples::bytes_per_element));
+  const int elements_ab = cli.integer("--elements-ab", 5, "elements on link AB", 1, examples::element_limit(examples::bytes_per_element));
+  const double h = cli.number("--h", 1e-4, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 3.0, "end time [s]", examples::Range::positive());
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
+  const std::string strategy = cli.text("--iteration-matrix", "update", "update | frozen | modified (modified Newton)",
+                                          {"update", "frozen", "modified"});
+  const int record_every = cli.integer("--record-every", 10, "steps between HDF5 records", 1);
+  const std::string out = cli.output_folder("--out", "results/ancf_double_pendulum", "output folder");
   if (!cli.finish()) return 0;
-  if (element != "24" && element != "30")
-    throw Error("unknown element '" + element + "'", "option --element", "use 24 or 30");
-  if (force != "invariant" && force != "gerstmayr")
-    throw Error("unknown force method '" + force + "'", "option --force", "use invariant or gerstmayr");
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. The two links (001 §6), OA along +X from the origin, AB along +Y from A.
   const auto preprocessing_start = std::chrono::steady_clock::now();
@@ -91,7 +89,6 @@ int main(int argc, char** argv) try {
   const double initial_energy = integrator.energies().total();
 
   // 5. Integrate and record.
-  std::filesystem::create_directories(out);
   const int samples_oa = 10 * elements_oa + 1, samples_ab = 10 * elements_ab + 1;
   core::ResultsWriter results(out + "/ancf_double_pendulum.h5",
                               {.node_count = 0, .velocities = false,

@@ -26,7 +26,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <numbers>
 
@@ -35,18 +34,17 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "ancf_pendulum: paper 001's flexible pendulum (Figures 3-7)");
-  const std::string element = cli.text("--element", "24", "24 | 30 (ANCF coordinates per element) | gebt");
-  const std::string force = cli.text("--force", "gerstmayr", "invariant (method I) | gerstmayr (method II)");
-  const int elements = cli.integer("--elements", 8, "number of elements");
-  const double h = cli.number("--h", 1e-3, "time step [s]");
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]");
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity");
-  const std::string out = cli.text("--out", "results/ancf_pendulum", "output folder");
+  const std::string element = cli.text("--element", "24", "24 | 30 (ANCF coordinates per element) | gebt",
+                                       {"24", "30", "gebt"});
+  const std::string force = cli.text("--force", "gerstmayr", "invariant (method I) | gerstmayr (method II)",
+                                     {"invariant", "gerstmayr"});
+  const int elements = cli.integer("--elements", 8, "number of elements", 1, examples::element_limit(examples::bytes_per_element));
+  const double h = cli.number("--h", 1e-3, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
+  const std::string out = cli.output_folder("--out", "results/ancf_pendulum", "output folder");
   if (!cli.finish()) return 0;
-  if (element != "24" && element != "30" && element != "gebt")
-    throw Error("unknown element '" + element + "'", "option --element", "use 24, 30 or gebt");
-  if (force != "invariant" && force != "gerstmayr")
-    throw Error("unknown force method '" + force + "'", "option --force", "use invariant or gerstmayr");
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. The rod of 001 §6 along +X from the origin.
   const double length = 2.0, radius = 0.02;
@@ -98,7 +96,6 @@ int main(int argc, char** argv) try {
   const double initial_energy = integrator.energies().total();
 
   // 5. Integrate and record.
-  std::filesystem::create_directories(out);
   core::ResultsWriter results(out + "/ancf_pendulum.h5",
                               {.node_count = 0, .velocities = false,
                                .scalars = examples::followed_by<core::ResultsQuantity>(

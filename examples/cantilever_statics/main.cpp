@@ -19,11 +19,11 @@
 #include <spar/spar.hpp>
 
 #include <cli.hpp>
+#include <static_stability.hpp>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <numbers>
 
@@ -33,7 +33,9 @@ namespace {
 
 /// The tip of the inextensible, unshearable Euler elastica under a dead tip force P along +Y:
 /// EI θ″ = −P cos θ, θ(0) = 0, θ′(L) = 0, found by bisection on θ′(0) with RK4 (4000 steps).
+/// A negative load bends the beam to −Y: the mirror image of the positive one.
 Eigen::Vector2d elastica_tip(double load, double length) {
+  if (load < 0.0) return elastica_tip(-load, length).cwiseProduct(Eigen::Vector2d(1.0, -1.0));
   const int steps = 4000;
   const double h = length / steps, p = load / (length * length);  // P/EI
   auto shoot = [&](double curvature0, Eigen::Vector2d& tip) {
@@ -64,18 +66,18 @@ int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv,
                             "cantilever_statics: roll-up and large-deflection cantilever (issue 4)");
-  const std::string load_case = cli.text("--case", "rollup", "rollup | tip-load");
+  const std::string load_case = cli.text("--case", "rollup", "rollup | tip-load", {"rollup", "tip-load"});
   const double load = cli.number("--load", 2 * std::numbers::pi,
-                                 "M L/EI (rollup) or P L^2/EI (tip-load)");
-  const int elements = cli.integer("--elements", 16, "number of NURBS elements");
-  const int degree = cli.integer("--degree", 3, "NURBS degree p (C^{p-1} continuity)");
-  const int load_steps = cli.integer("--steps", 10, "initial number of load steps");
-  const double length = cli.number("--length", 1.0, "beam length L [m]");
-  const double width = cli.number("--width", 0.01, "side of the square steel section [m]");
-  const std::string out = cli.text("--out", "results/cantilever_statics", "output folder");
+                                 "M L/EI (rollup) or P L^2/EI (tip-load)",
+                                 examples::Range::between(-100, 100));
+  const int elements = cli.integer("--elements", 16, "number of NURBS elements", 1, examples::element_limit(examples::bytes_per_element));
+  const int degree = cli.integer("--degree", 3, "NURBS degree p (C^{p-1} continuity)", 1, iga::max_degree);
+  const int load_steps = cli.integer("--steps", 10, "initial number of load steps", 1, 100000);
+  const double length = cli.number("--length", 1.0, "beam length L [m]", examples::Range::positive(1e3));
+  const double width = cli.number("--width", 0.01, "side of the square steel section [m]",
+                                    examples::Range::positive(1));
+  const std::string out = cli.output_folder("--out", "results/cantilever_statics", "output folder");
   if (!cli.finish()) return 0;
-  if (load_case != "rollup" && load_case != "tip-load")
-    throw Error("unknown case '" + load_case + "'", "option --case", "use rollup or tip-load");
 
   // 2. Build the beam: straight along +X (open-uniform C^{p-1} NURBS), steel square section.
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
@@ -99,13 +101,16 @@ int main(int argc, char** argv) try {
   // 4. Solve.
   const core::Configuration undeformed_state = model.state();
   const solvers::StaticReport report = solvers::solve_static(model, {.load_steps = load_steps});
+  examples::warn_if_unstable(report);
 
   // 5. Compare with the analytical solution.
   const Eigen::Vector3d tip_position = model.state().position[tip] - model.state().position[root];
   Eigen::Vector3d reference;
   if (load_case == "rollup") {
-    const double radius = length / load;  // κ = M/EI
-    reference = Eigen::Vector3d(radius * std::sin(load), radius * (1 - std::cos(load)), 0.0);
+    // An arc of radius L/load (κ = M/EI) through the angle load; the straight beam at load 0.
+    const double radius = length / load;
+    reference = load == 0.0 ? Eigen::Vector3d(length, 0.0, 0.0)
+                            : Eigen::Vector3d(radius * std::sin(load), radius * (1 - std::cos(load)), 0.0);
   } else {
     const Eigen::Vector2d elastica = elastica_tip(load, length);
     reference = Eigen::Vector3d(elastica(0), elastica(1), 0.0);
@@ -113,7 +118,6 @@ int main(int argc, char** argv) try {
   const double error = (tip_position - reference).norm() / length;
 
   // 6. Write the deformed centerline (CSV and HDF5).
-  std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
   const Eigen::MatrixXd centerline = beam.sample_centerline(model.state(), samples);
   const Eigen::MatrixXd undeformed = beam.sample_centerline(undeformed_state, samples);
@@ -149,6 +153,7 @@ int main(int argc, char** argv) try {
       .add("reference_tip_y", reference.y()).add("relative_tip_error", error)
       .add("load_steps", static_cast<int>(report.steps.size()))
       .add("newton_iterations", report.newton_iterations).add("wall_s", report.wall_seconds)
+      .add("unstable_directions", report.unstable_directions)
       .print();
   return 0;
 } catch (const std::exception& error) {

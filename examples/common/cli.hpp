@@ -1,19 +1,104 @@
 #pragma once
 // A small command-line reader shared by the examples: `--name value` options with defaults and
-// help text, `--help`, and a clear error for unknown options or malformed numbers. Also the JSON
-// summary line every example prints last.
+// help text, `--help`, and a spar::Error for every value a run cannot use (docs/errors.md):
+// malformed, missing or non-finite numbers, values outside an option's range (the message names
+// the range), integers that are not whole or do not fit, choices not on the list, an output
+// folder that cannot be created or written, a time span with too many steps, and more elements
+// than the memory holds. Also the JSON summary line every example prints last.
 #include <spar/error.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 
 namespace spar::examples {
+
+/// The values a numeric option accepts: an interval with open or closed ends. The default accepts
+/// every finite number.
+struct Range {
+  double low = -std::numeric_limits<double>::infinity();
+  double high = std::numeric_limits<double>::infinity();
+  bool low_open = false;
+  bool high_open = false;
+
+  /// (0, high], or (0, inf) without a bound: step sizes, lengths, tolerances.
+  static Range positive(double high = std::numeric_limits<double>::infinity()) {
+    return {0.0, high, true, std::isinf(high)};
+  }
+  /// [low, high].
+  static Range between(double low, double high) { return {low, high, false, false}; }
+
+  bool contains(double value) const {
+    return (low_open ? value > low : value >= low) && (high_open ? value < high : value <= high);
+  }
+  /// The interval as the message shows it, e.g. "(0, 1]" or "[-0.999, 0.5)".
+  std::string text() const {
+    return std::string(low_open ? "(" : "[") + significant(low) + ", " + significant(high) + (high_open ? ")" : "]");
+  }
+};
+
+/// The Newton tolerances an example accepts (|[dq, h²β dλ]|², |Φ|_∞ in m): a tolerance above 10⁻²
+/// accepts increments of decimetres and makes the result meaningless (1e300 gave an 8660 %
+/// deformation).
+inline constexpr Range newton_tolerances{0.0, 1e-2, true, false};
+
+/// A bound on the peak memory per --elements of an example (model, sparse iteration matrix with
+/// its LU fill, HDF5 buffers), the budget of element_limit: the measured increments are 26 kB
+/// (cantilever_statics) and 53 kB (slider_crank, two rods per --elements; docs/errors.md).
+inline constexpr double bytes_per_element = 1e5;
+
+/// The most steps a time span may take (t_end/h): far above the examples' runs (400 to 3·10⁴ steps
+/// by default, 10⁵ RK4 steps for heavy_top's reference), low enough that a mistyped step ends at
+/// once instead of running for days.
+inline constexpr double max_time_steps = 1e7;
+
+/// The number of steps of size h that reach t_end, or a spar::Error naming the options when h and
+/// t_end are not positive finite numbers with h ≤ t_end and t_end/h ≤ max_time_steps.
+inline long time_steps(double h, double t_end, const std::string& h_name = "--h",
+                       const std::string& t_end_name = "--t-end") {
+  const std::string where = "options " + h_name + ", " + t_end_name;
+  if (!(std::isfinite(h) && h > 0.0 && std::isfinite(t_end) && t_end > 0.0))
+    throw Error(h_name + " = " + significant(h) + " and " + t_end_name + " = " + significant(t_end) +
+                    " must be positive finite times", where, "give e.g. " + h_name + " 1e-3 " + t_end_name + " 1");
+  if (h > t_end * (1 + 1e-12))
+    throw Error("the step " + h_name + " = " + significant(h) + " s is longer than the span " + t_end_name +
+                    " = " + significant(t_end) + " s: no step would be taken",
+                where, "give a step no longer than the end time");
+  const double steps = std::ceil(t_end / h - 1e-9);
+  if (steps > max_time_steps)
+    throw Error(t_end_name + " / " + h_name + " = " + significant(steps) + " steps, more than the " +
+                    significant(max_time_steps) + " a run may take",
+                where, "raise " + h_name + " or lower " + t_end_name);
+  return static_cast<long>(steps);
+}
+
+/// The physical memory of this machine in bytes (sysconf; 4 GB if it cannot say), the budget of
+/// element_limit.
+inline double physical_memory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page_size > 0 ? static_cast<double>(pages) * static_cast<double>(page_size) : 4e9;
+}
+
+/// The most elements of `bytes_per_element` (an example's measured peak memory per element, with
+/// margin) that fit in half the physical memory, capped at the int range: the upper end of an
+/// --elements option, so a run that would end in std::bad_alloc after minutes is refused at once.
+inline int element_limit(double bytes_per_element) {
+  const double limit = 0.5 * physical_memory() / bytes_per_element;
+  return static_cast<int>(std::min(limit, static_cast<double>(std::numeric_limits<int>::max())));
+}
 
 class CommandLine {
 public:
@@ -22,7 +107,14 @@ public:
       const std::string arg = argv[i];
       if (arg == "--help" || arg == "-h") {
         help_ = true;
-      } else if (arg.rfind("--", 0) == 0 && i + 1 < argc) {
+      } else if (arg.rfind("--", 0) == 0) {
+        // A value is the next argument unless there is none or it is the next option (values may
+        // be negative numbers, "-1", but never start with "--").
+        if (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)
+          throw Error("option " + arg + " has no value", "command line",
+                      "give it one: " + arg + " <value> (see --help)");
+        if (given_.count(arg))
+          throw Error("option " + arg + " is given twice", "command line", "give each option once");
         given_[arg] = argv[++i];
       } else {
         throw Error("unexpected argument '" + arg + "'", "command line",
@@ -31,38 +123,80 @@ public:
     }
   }
 
-  double number(const std::string& name, double fallback, const std::string& help) {
-    char shown[32];
-    std::snprintf(shown, sizeof shown, "%g", fallback);
-    describe(name, shown, help);
+  /// A real number in `range` (default: any finite number). NaN is always refused; an infinity
+  /// only when the default is that same infinity (it then means "off", e.g. a tolerance).
+  double number(const std::string& name, double fallback, const std::string& help, Range range = {}) {
+    describe(name, significant(fallback), help, range.text());
+    check_default(name, fallback, range);
     const auto it = given_.find(name);
     if (it == given_.end()) return fallback;
     used_.push_back(name);
+    const std::string& given = it->second;
     char* end = nullptr;
-    const double value = std::strtod(it->second.c_str(), &end);
-    if (end == it->second.c_str() || *end != '\0')
-      throw Error("'" + it->second + "' is not a number", "option " + name, "give a number");
+    const double value = std::strtod(given.c_str(), &end);
+    if (given.empty() || end == given.c_str() || *end != '\0')
+      throw Error("'" + given + "' is not a number", "option " + name, "give a number in " + range.text());
+    if (std::isnan(value))
+      throw Error("'" + given + "' is not a number (NaN)", "option " + name, "give a number in " + range.text());
+    if (std::isinf(value) && value != fallback)
+      throw Error("'" + given + "' is infinite or overflows a double", "option " + name,
+                  "give a finite number in " + range.text());
+    if (!std::isinf(value) && !range.contains(value))
+      throw Error("'" + given + "' is outside the range " + range.text(), "option " + name,
+                  "give a number in " + range.text());
     return value;
   }
 
-  int integer(const std::string& name, int fallback, const std::string& help) {
-    const double value = number(name, fallback, help);
-    if (value != static_cast<int>(value))
-      throw Error("'" + std::to_string(value) + "' is not an integer", "option " + name,
-                  "give a whole number");
-    return static_cast<int>(value);
-  }
-
-  std::string text(const std::string& name, const std::string& fallback, const std::string& help) {
-    describe(name, fallback, help);
+  /// A whole number in [low, high]; "1e3" is read as 1000, "2.5" and values that do not fit are
+  /// refused with the given text and the range (never cast).
+  int integer(const std::string& name, int fallback, const std::string& help,
+              int low = std::numeric_limits<int>::min(), int high = std::numeric_limits<int>::max()) {
+    const Range range = Range::between(low, high);
+    std::string accepted = "[";  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "[" + …
+    accepted.append(std::to_string(low)).append(", ").append(std::to_string(high)).append("]");
+    describe(name, std::to_string(fallback), help, accepted);
+    check_default(name, fallback, range);
     const auto it = given_.find(name);
     if (it == given_.end()) return fallback;
     used_.push_back(name);
-    return it->second;
+    const std::string& given = it->second;
+    char* end = nullptr;
+    const double value = std::strtod(given.c_str(), &end);
+    if (given.empty() || end == given.c_str() || *end != '\0' || !std::isfinite(value) ||
+        value != std::floor(value))
+      throw Error("'" + given + "' is not a whole number", "option " + name,
+                  "give a whole number in " + accepted);
+    if (!range.contains(value))
+      throw Error("'" + given + "' is outside the range " + accepted, "option " + name,
+                  "give a whole number in " + accepted);
+    return static_cast<int>(value);
+  }
+
+  /// A text; when `choices` is not empty, one of them.
+  std::string text(const std::string& name, const std::string& fallback, const std::string& help,
+                   const std::vector<std::string>& choices = {}) {
+    std::string list;
+    for (const auto& choice : choices) list += (list.empty() ? "" : " | ") + choice;
+    describe(name, fallback, help, list);
+    const auto it = given_.find(name);
+    if (it == given_.end()) return fallback;
+    used_.push_back(name);
+    if (choices.empty()) return it->second;
+    for (const auto& choice : choices)
+      if (choice == it->second) return it->second;
+    throw Error("'" + it->second + "' is not one of " + list, "option " + name, "give one of " + list);
+  }
+
+  /// A folder the run writes its results to. finish() creates it and proves it writable, so a
+  /// folder that cannot be made (an existing file, no permission, "") is refused before solving.
+  std::string output_folder(const std::string& name, const std::string& fallback, const std::string& help) {
+    const std::string folder = text(name, fallback, help);
+    folders_.emplace_back(name, folder);
+    return folder;
   }
 
   /// Call after reading every option: prints the help and returns false for --help; throws for
-  /// options that were given but never read.
+  /// options that were given but never read and for output folders that cannot be written.
   bool finish() {
     if (help_) {
       std::printf("%s\n\nOptions:\n%s  --help              this text\n", usage_.c_str(),
@@ -75,21 +209,47 @@ public:
       if (!known)
         throw Error("unknown option " + name, "command line", "see --help for the options");
     }
+    for (const auto& [name, folder] : folders_) prepare_folder(name, folder);
     return true;
   }
 
 private:
-  void describe(const std::string& name, const std::string& fallback, const std::string& help) {
-    char line[256];
-    std::snprintf(line, sizeof line, "  %-18s  %s (default %s)\n", name.c_str(), help.c_str(),
-                  fallback.c_str());
-    options_ << line;
+  void describe(const std::string& name, const std::string& fallback, const std::string& help,
+                const std::string& accepted) {
+    options_ << "  " << name << std::string(name.size() < 18 ? 18 - name.size() : 0, ' ') << "  " << help
+             << " (default " << fallback << (accepted.empty() ? "" : "; " + accepted) << ")\n";
+  }
+
+  /// A default outside its own range is the example's mistake, caught the first time it runs.
+  static void check_default(const std::string& name, double fallback, const Range& range) {
+    if (!std::isnan(fallback) && (std::isinf(fallback) || range.contains(fallback))) return;
+    throw Error("the default " + significant(fallback) + " is outside the range " + range.text(),
+                "option " + name, "the example must give a default inside its range");
+  }
+
+  static void prepare_folder(const std::string& name, const std::string& folder) {
+    namespace fs = std::filesystem;
+    const std::string where = "option " + name;
+    if (folder.empty()) throw Error("the output folder is empty", where, "give a folder, e.g. results/run");
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error || !fs::is_directory(folder))
+      throw Error("cannot create the output folder '" + folder + "'" +
+                      (error ? ": " + error.message() : ": a file of that name exists"),
+                  where, "give a folder you may write to");
+    const fs::path probe = fs::path(folder) / ".spar_write_probe";
+    const bool writable = static_cast<bool>(std::ofstream(probe));
+    fs::remove(probe, error);
+    if (!writable)
+      throw Error("cannot write into the output folder '" + folder + "'", where,
+                  "give a folder you may write to");
   }
 
   std::string usage_;
   bool help_ = false;
   std::map<std::string, std::string> given_;
   std::vector<std::string> used_;
+  std::vector<std::pair<std::string, std::string>> folders_;
   std::ostringstream options_;
 };
 

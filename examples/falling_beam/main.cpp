@@ -30,7 +30,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <optional>
@@ -40,15 +39,15 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "falling_beam: a lumped mass sliding off a falling cantilever (000 §6.1)");
-  const std::string kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf");
-  const int elements = cli.integer("--elements", 20, "elements (≥ 3)");
-  const double h = cli.number("--h", 1e-3, "time step [s]");
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]");
-  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)");
-  const std::string out = cli.text("--out", "results/falling_beam", "output folder");
+  const std::string kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf", {"ale-rancf", "ale-ancf"});
+  const int elements = cli.integer("--elements", 20, "elements", 3, examples::element_limit(examples::bytes_per_element));
+  const double h = cli.number("--h", 1e-3, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
+  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
+                                          examples::Range::between(0, 1));
+  const std::string out = cli.output_folder("--out", "results/falling_beam", "output folder");
   if (!cli.finish()) return 0;
-  if (kind != "ale-rancf" && kind != "ale-ancf")
-    throw Error("unknown element kind '" + kind + "'", "falling_beam --element", "use ale-rancf or ale-ancf");
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. The beam, the sliding mass (and the block it flies off in) and the clamp.
   const double radius = 0.01, young = 20e6, density = 7200;
@@ -78,7 +77,6 @@ int main(int argc, char** argv) try {
   double separation_time = -1.0, support_time = -1.0;
 
   // 4. Integrate, control the lengths, record.
-  std::filesystem::create_directories(out);
   const int per_element = 10;
   core::ResultsWriter results(out + "/falling_beam.h5",
                               {.node_count = 0, .velocities = false,
@@ -88,7 +86,8 @@ int main(int argc, char** argv) try {
                                     {.name = "beam_length", .unit = "m",
                                      .description = "the cable's current length (sum of element arc lengths)"},
                                     {.name = "slider_material_coordinate", .unit = "m",
-                                     .description = "the sliding node's material coordinate (arc length from the left end)"},
+                                     .description = "the sliding node's material coordinate (arc length from the left end)",
+                                     .may_be_undefined = true},
                                     {.name = "newton_iterations", .unit = "1",
                                      .description = "Newton iterations (linear solves) of the step", .integer = true}},
                                    examples::energy_balance_layout()),

@@ -30,7 +30,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 
 using namespace spar;
@@ -64,15 +63,20 @@ double chord_deflection(const core::GeometricallyExactBeam& rod, const core::Con
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "flexible_pendulum: a pinned steel rule falling from the horizontal");
-  const double h = cli.number("--h", 2.5e-4, "time step [s]");
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]");
-  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)");
-  const int elements = cli.integer("--elements", 8, "cubic NURBS elements");
-  const double width = cli.number("--width", 0.03, "section width, out of the plane of the swing (Y) [m]");
-  const double thickness = cli.number("--thickness", 0.001, "section thickness, in the plane of the swing (Z) [m]");
-  const double tolerance = cli.number("--tolerance", 1e-20, "Newton: |[dq, h^2 beta dlambda]|^2");
-  const std::string out = cli.text("--out", "results/flexible_pendulum", "output folder");
+  const double h = cli.number("--h", 2.5e-4, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
+  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
+                                          examples::Range::between(0, 1));
+  const int elements = cli.integer("--elements", 8, "cubic NURBS elements", 1, examples::element_limit(examples::bytes_per_element));
+  const double width = cli.number("--width", 0.03, "section width, out of the plane of the swing (Y) [m]",
+                                    examples::Range::positive(0.5));
+  const double thickness = cli.number("--thickness", 0.001, "section thickness, in the plane of the swing (Z) [m]",
+                                        examples::Range::positive(0.5));
+  const double tolerance = cli.number("--tolerance", 1e-20, "Newton: |[dq, h^2 beta dlambda]|^2",
+                                        examples::newton_tolerances);
+  const std::string out = cli.output_folder("--out", "results/flexible_pendulum", "output folder");
   if (!cli.finish()) return 0;
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. The rule: steel, flat rectangular section, pinned at the origin.
   const double length = 1.0;
@@ -105,7 +109,6 @@ int main(int argc, char** argv) try {
   const double initial_energy = integrator.energies().total();
 
   // 5. Integrate and record.
-  std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
   const Eigen::MatrixXd arc_length = examples::reference_arc_length(rod, initial_state, samples);
   core::ResultsWriter results(out + "/flexible_pendulum.h5",

@@ -40,22 +40,24 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "four_bar: a flexible spatial four-bar driven at 10 rad/s");
-  const double h = cli.number("--h", 1e-4, "time step [s]");
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]");
-  const int elements = cli.integer("--elements", 4, "cubic NURBS elements per rod");
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity");
-  const double tolerance = cli.number("--tolerance", 1e-16, "Newton: |[dq, h^2 beta dlambda]|^2 (squared, m and rad)");
-  const std::string assembly = cli.text("--initial-assembly", "on", "consistent initial assembly: on | off");
+  const double h = cli.number("--h", 1e-4, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
+  const int elements = cli.integer("--elements", 4, "cubic NURBS elements per rod", 1,
+                                   examples::element_limit(examples::bytes_per_element));
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
+  const double tolerance = cli.number("--tolerance", 1e-16, "Newton: |[dq, h^2 beta dlambda]|^2 (squared, m and rad)",
+                                        examples::newton_tolerances);
+  const std::string assembly = cli.text("--initial-assembly", "on", "consistent initial assembly", {"on", "off"});
   const double stiffness_time = cli.number("--velocity-stiffness-time", 1.0,
                                            "initial velocities projected in the metric M + tau^2 K: tau [s] "
-                                           "(0: the mass metric, an impulsive start)");
+                                           "(0: the mass metric, an impulsive start)",
+                                           examples::Range{0.0, INFINITY, false, true});
   const double output_interval = cli.number("--output-interval", 0.0,
                                             "record every this many seconds, interpolated between steps "
-                                            "(0: every step)");
-  const std::string out = cli.text("--out", "results/four_bar", "output folder");
+                                            "(0: every step)", examples::Range{0.0, INFINITY, false, true});
+  const std::string out = cli.output_folder("--out", "results/four_bar", "output folder");
   if (!cli.finish()) return 0;
-  if (assembly != "on" && assembly != "off")
-    throw Error("--initial-assembly '" + assembly + "'", "four_bar", "give on or off");
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. Build the mechanism (examples/four_bar/four_bar_model.hpp): rods, coupler, joints, drive.
   examples::FourBar mechanism = examples::build_four_bar(elements);

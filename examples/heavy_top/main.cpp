@@ -29,7 +29,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 
 using namespace spar;
@@ -37,14 +36,17 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "heavy_top: the heavy top of Bruls, Cardona & Arnold (2012)");
-  const double h = cli.number("--h", 2.5e-4, "time step [s]");
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]");
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity");
-  const double tolerance = cli.number("--tolerance", 1e-24, "Newton: |[dq, h^2 beta dlambda]|^2");
-  const double reference_step = cli.number("--reference-step", 1e-5, "largest RK4 step of the reference [s]");
-  const std::string out = cli.text("--out", "results/heavy_top", "output folder");
+  const double h = cli.number("--h", 2.5e-4, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
+  const double tolerance = cli.number("--tolerance", 1e-24, "Newton: |[dq, h^2 beta dlambda]|^2",
+                                        examples::newton_tolerances);
+  const double reference_step = cli.number("--reference-step", 1e-5, "largest RK4 step of the reference [s]",
+                                            examples::Range::positive());
+  const std::string out = cli.output_folder("--out", "results/heavy_top", "output folder");
   if (!cli.finish()) return 0;
-  if (!(reference_step > 0.0)) throw Error("--reference-step must be positive", "heavy_top", "give e.g. 1e-5");
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  examples::time_steps(reference_step, t_end, "--reference-step");  // and so for the RK4 reference
 
   // 2. The top (Brüls, Cardona & Arnold 2012, §5.1) and its initial state.
   const examples::heavy_top::TopParameters top = examples::heavy_top::classic_top();
@@ -80,7 +82,6 @@ int main(int argc, char** argv) try {
   const double initial_energy = reference.energy(exact);
 
   // 7. Integrate and record.
-  std::filesystem::create_directories(out);
   core::ResultsWriter results(out + "/heavy_top.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),

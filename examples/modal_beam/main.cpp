@@ -45,12 +45,13 @@ double timoshenko_pinned(int k, double length, double EI, double kGA, double rho
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "modal_beam: modes of a pinned-pinned steel beam against Timoshenko's");
-  const double length = cli.number("--length", 1.0, "beam length [m]");
-  const double width = cli.number("--width", 0.02, "section width, along the section axis 2 (Y) [m]");
-  const double height = cli.number("--height", 0.01, "section height, along the section axis 3 (Z) [m]");
-  const int elements = cli.integer("--elements", 64, "cubic NURBS elements");
-  const int mode_count = cli.integer("--modes", 12, "lowest modes to compute");
-  const std::string out = cli.text("--out", "results/modal_beam", "output folder");
+  const double length = cli.number("--length", 1.0, "beam length [m]", examples::Range::positive());
+  const double width = cli.number("--width", 0.02, "section width, along the section axis 2 (Y) [m]", examples::Range::positive());
+  const double height = cli.number("--height", 0.01, "section height, along the section axis 3 (Z) [m]", examples::Range::positive());
+  const int elements = cli.integer("--elements", 64, "cubic NURBS elements", 1,
+                                   examples::element_limit(examples::bytes_per_element));
+  const int mode_count = cli.integer("--modes", 12, "lowest modes to compute", 1, 1000);
+  const std::string out = cli.output_folder("--out", "results/modal_beam", "output folder");
   if (!cli.finish()) return 0;
 
   // 2. The beam and its two pins.

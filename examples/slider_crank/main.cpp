@@ -28,7 +28,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <optional>
 
@@ -37,21 +36,29 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "slider_crank: the flexible slider-crank of 003 section 5.1");
-  const double h = cli.number("--h", 5e-4, "time step [s]");
-  const double t_end = cli.number("--t-end", 0.2, "end time [s]");
-  const std::string strategy = cli.text("--strategy", "frozen", "iteration matrix: update | frozen | modified");
-  const int elements = cli.integer("--elements", 6, "cubic NURBS elements per rod");
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity");
-  const double tolerance = cli.number("--tolerance", 1e-6, "Newton: |[dq, h^2 beta dlambda]|^2 (003: 1e-6)");
-  const double constraint_tolerance = cli.number("--constraint-tolerance", 1e-10, "Newton: |Phi|_inf [m]");
+  const double h = cli.number("--h", 5e-4, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 0.2, "end time [s]", examples::Range::positive());
+  const std::string strategy = cli.text("--strategy", "frozen", "iteration matrix: update | frozen | modified",
+                                          {"update", "frozen", "modified"});
+  const int elements = cli.integer("--elements", 6, "cubic NURBS elements per rod", 1,
+                                     examples::element_limit(examples::bytes_per_element));
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
+  const double tolerance = cli.number("--tolerance", 1e-6, "Newton: |[dq, h^2 beta dlambda]|^2 (003: 1e-6)",
+                                        examples::newton_tolerances);
+  const double constraint_tolerance = cli.number("--constraint-tolerance", 1e-10, "Newton: |Phi|_inf [m]",
+                                                   examples::newton_tolerances);
   const double residual_tolerance = cli.number("--residual-tolerance", INFINITY,
-                                               "Newton: relative dynamic residual (off: 003's test)");
-  const int max_iterations = cli.integer("--max-iterations", 25, "Newton iterations before a step is cut back");
-  const std::string solver = cli.text("--solver", "klu", "sparse LU: klu | umfpack | eigen-lu");
+                                               "Newton: relative dynamic residual (off: 003's test)",
+                                               examples::Range::positive(1));
+  const int max_iterations = cli.integer("--max-iterations", 25, "Newton iterations before a step is cut back", 1, 1000);
+  const std::string solver = cli.text("--solver", "klu", "sparse LU: klu | umfpack | eigen-lu",
+                                        {"klu", "umfpack", "eigen-lu"});
   const double drive_rise_time = cli.number("--drive-rise-time", 0.0,
-                                            "ramp the drive from 0 to M over this time [s] (0: the paper's step)");
-  const std::string out = cli.text("--out", "results/slider_crank", "output folder");
+                                            "ramp the drive from 0 to M over this time [s] (0: the paper's step)",
+                                            examples::Range::between(0, 1e3));
+  const std::string out = cli.output_folder("--out", "results/slider_crank", "output folder");
   if (!cli.finish()) return 0;
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. Build the mechanism of 003 Table 1 (examples/slider_crank/slider_crank_model.hpp): the
   //    rods, the slider, the joints, the driving moment and gravity.
@@ -74,7 +81,6 @@ int main(int argc, char** argv) try {
   integrator.initialize();
   const core::Configuration initial_state = model.state();  // the reference geometry, for arc lengths
 
-  std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;  // centerline points per rod in the results file
   const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank, initial_state, samples);
   const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler, initial_state, samples);

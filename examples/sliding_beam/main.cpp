@@ -31,7 +31,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 
 using namespace spar;
@@ -39,16 +38,22 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "sliding_beam: the eccentric sliding beam of 003 section 5.2");
-  const double h = cli.number("--h", 1e-3, "time step [s]");
-  const double t_end = cli.number("--t-end", 3.0, "end time if the slider has not reached B by then [s]");
-  const int elements = cli.integer("--elements", 16, "NURBS elements of the carrier beam");
-  const int sliding_elements = cli.integer("--sliding-elements", 2, "NURBS elements of the sliding beam");
-  const int degree = cli.integer("--degree", 2, "NURBS degree of both beams (003: 2)");
-  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified");
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity");
-  const double tolerance = cli.number("--tolerance", 1e-12, "Newton: |[dq, h^2 beta dlambda]|^2");
-  const std::string out = cli.text("--out", "results/sliding_beam", "output folder");
+  const double h = cli.number("--h", 1e-3, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 3.0, "end time if the slider has not reached B by then [s]",
+                                 examples::Range::positive());
+  const int elements = cli.integer("--elements", 16, "NURBS elements of the carrier beam", 1,
+                                     examples::element_limit(examples::bytes_per_element));
+  const int sliding_elements = cli.integer("--sliding-elements", 2, "NURBS elements of the sliding beam", 1,
+                                             examples::element_limit(examples::bytes_per_element));
+  const int degree = cli.integer("--degree", 2, "NURBS degree of both beams (003: 2)", 1, iga::max_degree);
+  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
+                                          {"update", "frozen", "modified"});
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
+  const double tolerance = cli.number("--tolerance", 1e-12, "Newton: |[dq, h^2 beta dlambda]|^2",
+                                        examples::newton_tolerances);
+  const std::string out = cli.output_folder("--out", "results/sliding_beam", "output folder");
   if (!cli.finish()) return 0;
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. Build the model of 003 Table 3 (examples/sliding_beam/sliding_beam_model.hpp): the two
   //    beams, the tip mass, gravity, the carrier's pins at A and B, the mass's pin at M and the
@@ -72,7 +77,6 @@ int main(int argc, char** argv) try {
   const auto zeta_rate = [&] { return integrator.velocity()(model.state().blocks[zeta_block].offset); };
 
   // 4. Integrate until the slider locks at B, recording every step.
-  std::filesystem::create_directories(out);
   const int carrier_samples = 8 * elements + 1, sliding_samples = 16 * sliding_elements + 1;
   core::ResultsWriter results(out + "/sliding_beam.h5",
                               {.node_count = model.block_count(), .velocities = false,

@@ -29,7 +29,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <optional>
@@ -39,15 +38,15 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "suspended_beam: a lumped mass sliding on a pinned-pinned beam (000 §6.2)");
-  const std::string kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf");
-  const int elements = cli.integer("--elements", 3, "elements (≥ 3)");
-  const double h = cli.number("--h", 1e-3, "time step [s]");
-  const double t_end = cli.number("--t-end", 2.0, "end time [s]");
-  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)");
-  const std::string out = cli.text("--out", "results/suspended_beam", "output folder");
+  const std::string kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf", {"ale-rancf", "ale-ancf"});
+  const int elements = cli.integer("--elements", 3, "elements", 3, examples::element_limit(examples::bytes_per_element));
+  const double h = cli.number("--h", 1e-3, "time step [s]", examples::Range::positive());
+  const double t_end = cli.number("--t-end", 2.0, "end time [s]", examples::Range::positive());
+  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
+                                          examples::Range::between(0, 1));
+  const std::string out = cli.output_folder("--out", "results/suspended_beam", "output folder");
   if (!cli.finish()) return 0;
-  if (kind != "ale-rancf" && kind != "ale-ancf")
-    throw Error("unknown element kind '" + kind + "'", "suspended_beam --element", "use ale-rancf or ale-ancf");
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. The beam, the sliding mass and the supports.
   const double radius = 0.01, young = 20e6, density = 7200;
@@ -72,7 +71,6 @@ int main(int argc, char** argv) try {
   integrator.initialize();
 
   // 4. Integrate, control the lengths, record.
-  std::filesystem::create_directories(out);
   const int per_element = 10;
   core::ResultsWriter results(out + "/suspended_beam.h5",
                               {.node_count = 0, .velocities = false,

@@ -42,34 +42,36 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options; the defaults of h, t-end and elements are 003's for the chosen case.
   examples::CommandLine cli(argc, argv, "truss_deployment: the deployable truss unit of 003 section 5.3");
-  const int load_case = cli.integer("--case", 2, "1: deployment under gravity 0.005 g along X; 2: driven by a law");
-  if (load_case != 1 && load_case != 2)
-    throw Error("case " + std::to_string(load_case) + " does not exist", "option --case", "give 1 or 2");
+  const int load_case = cli.integer("--case", 2, "1: deployment under gravity 0.005 g along X; 2: driven by a law", 1, 2);
   const bool driven = load_case == 2;
-  const std::string law = cli.text("--law", "cosine", "case 2: linear | polynomial | cycloid | cosine (003 eqs. 54-57)");
-  const double t_f = cli.number("--t-f", 20.0, "case 2: deployment time of the law [s]");
-  const double h = cli.number("--h", driven ? 0.005 : 0.1, "time step [s] (003: 0.005 in case 2, 0.1 in case 1)");
+  const std::string law = cli.text("--law", "cosine", "case 2: the deployment law (003 eqs. 54-57)",
+                                   {"linear", "polynomial", "cycloid", "cosine"});
+  const double t_f = cli.number("--t-f", 20.0, "case 2: deployment time of the law [s]", examples::Range::positive());
+  const double h = cli.number("--h", driven ? 0.005 : 0.1, "time step [s] (003: 0.005 in case 2, 0.1 in case 1)",
+                              examples::Range::positive());
   const double t_end = cli.number("--t-end", driven ? 30.0 : 100.0,
-                                  "end time [s] (case 1 ends earlier, when the sliders have locked)");
+                                  "end time [s] (case 1 ends earlier, when the sliders have locked)",
+                                  examples::Range::positive());
   examples::TrussParameters parameters;
-  parameters.elements = cli.integer("--elements", driven ? 4 : 1, "quadratic NURBS elements per member (003: 1 in case 1, 4 in case 2)");
-  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified");
-  const std::string linear_solver = cli.text("--linear-solver", "klu", "sparse direct solver: klu | umfpack | eigen-lu");
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity");
+  //    28 members per --elements (examples::bytes_per_element is a bound per beam element).
+  parameters.elements = cli.integer("--elements", driven ? 4 : 1,
+                                    "quadratic NURBS elements per member (003: 1 in case 1, 4 in case 2)", 1,
+                                    std::max(1, examples::element_limit(examples::bytes_per_element) / 28));
+  const std::string strategy = cli.text("--strategy", "update", "iteration matrix", {"update", "frozen", "modified"});
+  const std::string linear_solver = cli.text("--linear-solver", "klu", "sparse direct solver", {"klu", "umfpack", "eigen-lu"});
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
   //    The increment test (a squared norm) at 1e-8 ends most steps after one iteration; the
   //    residual (1e-8 of its terms) and constraint (1e-10 m) tests hold the accuracy: 1e-12 needs
   //    1.6x the iterations for the same lock time and residual vibration to 4 digits (README).
-  const double tolerance = cli.number("--tolerance", 1e-8, "Newton: |[dq, h^2 beta dlambda]|^2");
+  const double tolerance = cli.number("--tolerance", 1e-8, "Newton: |[dq, h^2 beta dlambda]|^2", examples::newton_tolerances);
   const double output_interval = cli.number("--output-interval", driven ? 0.05 : 0.1,
-                                            "time between the members' centerlines in the HDF5/XDMF file [s]");
-  const std::string out = cli.text("--out", driven ? "results/truss_deployment/case2_" + law
+                                            "time between the members' centerlines in the HDF5/XDMF file [s]",
+                                            examples::Range::positive());
+  const std::string out = cli.output_folder("--out", driven ? "results/truss_deployment/case2_" + law
                                                    : std::string("results/truss_deployment/case1"),
                                    "output folder");
   if (!cli.finish()) return 0;
-  if (driven) (void)examples::law_shape(law, 0.0);  // an unknown law fails before the model is built
-  if (!(t_f > 0.0 && std::isfinite(t_f)))
-    throw Error("t_f = " + std::to_string(t_f) + " s is not a positive time", "option --t-f",
-                "give the deployment time in seconds, e.g. 20 (003)");
+  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. Build the folded unit of 003 Table 4 (truss_model.hpp), then the case's load: gravity
   //    along X, or the drivers of the law that hand over to the locks.

@@ -31,9 +31,9 @@ KnotOperator knot_insertion_operator(const KnotVector& U, double u, int times) {
   check_interior(U, u, where);
   const int p = U.degree();
   const int s = U.multiplicity(u);
-  if (times < 1 || s + times > p)
+  if (times < 1 || times > p - s)  // not s + times > p: times near INT_MAX overflowed past the check
     throw Error("inserting " + detail::number(u) + " " + std::to_string(times) +
-                    " times would give multiplicity " + std::to_string(s + times) +
+                    " times would give multiplicity " + std::to_string(static_cast<long long>(s) + times) +
                     " (allowed: 1 … p = " + std::to_string(p) + ")",
                 where, "insert at least once and at most p − multiplicity times");
   const std::vector<double>& UP = U.knots();
@@ -70,6 +70,9 @@ KnotOperator knot_refinement_operator(const KnotVector& U, const std::vector<dou
   const int p = U.degree();
   const int count = U.basis_count();
   if (X.empty()) return {U, Rows::Identity(count, count)};
+  if (X.size() > static_cast<std::size_t>(max_knots) - U.knots().size())
+    throw Error(std::to_string(X.size()) + " knots to insert would exceed iga::max_knots = " + std::to_string(max_knots),
+                where, "insert fewer knots");
   for (std::size_t j = 0; j < X.size(); ++j) {
     check_interior(U, X[j], where);
     if (j > 0 && X[j] < X[j - 1])
@@ -124,11 +127,18 @@ KnotOperator degree_elevation_operator(const KnotVector& U, int t) {
   constexpr const char* where = "iga::degree_elevation_operator";
   const int p = U.degree();
   const int count = U.basis_count();
-  if (t < 0 || p + t > max_degree)
+  if (t < 0 || t > max_degree - p)  // not p + t > max_degree: t near INT_MAX overflowed past the check
     throw Error("elevating degree " + std::to_string(p) + " by " + std::to_string(t) +
                     " is outside 0 … max_degree = " + std::to_string(max_degree),
                 where, "elevate by 0 ≤ t ≤ max_degree − p");
   if (t == 0) return {U, Rows::Identity(count, count)};
+  // A5.9 assumes interior multiplicities ≤ p: at p + 1 (a discontinuity) it read past its
+  // Bézier-point arrays (found by the fuzz test, tests/input/fuzz_test.cpp).
+  for (const double u : U.unique_knots())
+    if (u != U.first() && u != U.last() && U.multiplicity(u) > p)
+      throw Error("the interior knot " + detail::number(u) + " has multiplicity p + 1 = " + std::to_string(p + 1) +
+                      " (the curve is discontinuous there); degree elevation needs multiplicities <= p",
+                  where, "elevate the pieces on either side of the discontinuity separately");
   const std::vector<double>& knots = U.knots();
   const int m = static_cast<int>(knots.size()) - 1;
   const int ph = p + t;
@@ -236,9 +246,11 @@ KnotOperator degree_elevation_operator(const KnotVector& U, int t) {
 }
 
 std::vector<double> uniform_refinement_knots(const KnotVector& U, int elements_per_span) {
-  if (elements_per_span < 1)
-    throw Error("elements_per_span = " + std::to_string(elements_per_span) + " is below 1",
-                "iga::uniform_refinement_knots", "split every element into one part or more");
+  if (elements_per_span < 1 || elements_per_span > max_knots / U.element_count())
+    throw Error("elements_per_span = " + std::to_string(elements_per_span) + " is outside 1 … " +
+                    std::to_string(max_knots / U.element_count()) + " (iga::max_knots over " +
+                    std::to_string(U.element_count()) + " elements)",
+                "iga::uniform_refinement_knots", "split every element into one part or more, within the limit");
   std::vector<double> X;
   for (int e = 0; e < U.element_count(); ++e) {
     const Element element = U.element(e);

@@ -29,9 +29,10 @@ Legendre legendre(int n, long double x) {
 }  // namespace
 
 GaussRule gauss_legendre(int n) {
-  if (n < 1)
-    throw Error("a Gauss–Legendre rule needs at least one point, got " + std::to_string(n),
-                "iga::gauss_legendre", "ask for n ≥ 1 points");
+  if (n < 1 || n > max_gauss_points)
+    throw Error("a Gauss–Legendre rule has 1 to " + std::to_string(max_gauss_points) + " points, asked for " +
+                    std::to_string(n),
+                "iga::gauss_legendre", "ask for 1 ≤ n ≤ " + std::to_string(max_gauss_points) + " points");
   GaussRule rule{std::vector<double>(n), std::vector<double>(n)};
   // Roots come in ± pairs; compute the non-negative ones and mirror them.
   for (int i = 0; i < (n + 1) / 2; ++i) {

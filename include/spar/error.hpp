@@ -3,11 +3,20 @@
 /// The one exception type of spar. Every error in user input or in a run that cannot go on raises
 /// a spar::Error whose message says what went wrong, where, and how to fix it.
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
 namespace spar {
+
+/// A number for an error message with 6 significant digits: "-1e-09", "2.14748e+09", "0.33"
+/// (std::to_string's fixed six decimals print 1e-7 as "0.000000" and hide the value).
+inline std::string significant(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
 
 /// An error a user can act on: `what` went wrong, `where` (function, object, index, time),
 /// and `fix` (what to change). `what()` returns the three joined into one message.

@@ -2,6 +2,7 @@
 
 #include <spar/core/elements/ancf_beam_element.hpp>
 #include <spar/error.hpp>
+#include <spar/joints/attachment.hpp>
 
 #include "evaluation_checks.hpp"
 
@@ -62,7 +63,7 @@ LinearPoint ancf_element_point(const core::AncfBeam& beam, int element, double x
 
 AncfSphericalJoint::AncfSphericalJoint(const LinearPoint& a, const Eigen::Vector3d& ground,
                                        const core::Configuration& q)
-    : ground_(ground) {
+    : ground_(finite_point(ground, "ground point", "joints::AncfSphericalJoint")) {
   add(a, 1.0, q);
 }
 

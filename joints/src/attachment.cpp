@@ -16,8 +16,16 @@ void check_node(int node, const core::Configuration& q0, std::string_view where)
                 "attach this joint to a frame block (a beam control point or a rigid body)");
 }
 
+const Eigen::Vector3d& finite_point(const Eigen::Vector3d& point, std::string_view name, std::string_view where) {
+  if (!point.allFinite())
+    throw Error("the " + std::string(name) + " has a NaN or infinite coordinate", where,
+                "give finite coordinates in metres");
+  return point;
+}
+
 Attachment attach_at(int node, const Eigen::Vector3d& point, const core::Configuration& q0) {
   check_node(node, q0, "joints::attach_at");
+  finite_point(point, "attachment point", "joints::attach_at");
   if (node < 0) return {.node = -1, .offset = point};
   return {.node = node, .offset = q0.rotation[node].transpose() * (point - q0.position[node])};
 }
@@ -26,6 +34,8 @@ JointFrames joint_frames(const Attachment& a, const Attachment& b, const core::C
                          std::string_view where) {
   check_node(a.node, q0, where);
   check_node(b.node, q0, where);
+  finite_point(a.offset, "offset of attachment a", where);
+  finite_point(b.offset, "offset of attachment b", where);
   if (a.on_ground() && b.on_ground())
     throw Error("both attachments are on the ground", where,
                 "attach at least one side to a node (node >= 0)");

@@ -12,7 +12,7 @@ constexpr std::string_view name = "joints::PositionDriver";
 
 PositionDriver::PositionDriver(const Attachment& a, const Eigen::Vector3d& direction,
                                TimeFunction f, const core::Configuration& q0)
-    : point_(single_node_frame(a.node, q0, name), a.offset),
+    : point_(single_node_frame(a.node, q0, name), finite_point(a.offset, "attachment offset", name)),
       direction_(unit_vector(direction, "driving direction", name)),
       reference_(direction_.dot(point_.position(q0))),
       f_(std::move(f)) {

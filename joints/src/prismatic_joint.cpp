@@ -23,8 +23,8 @@ Eigen::Matrix<double, 2, 3> line_normals(const Eigen::Vector3d& direction) {
 PrismaticJoint::PrismaticJoint(const Attachment& a, const Eigen::Vector3d& line_point,
                                const Eigen::Vector3d& direction, bool lock_rotation,
                                const core::Configuration& q0)
-    : point_(single_node_frame(a.node, q0, name), a.offset),
-      line_point_(line_point),
+    : point_(single_node_frame(a.node, q0, name), finite_point(a.offset, "attachment offset", name)),
+      line_point_(finite_point(line_point, "line point", name)),
       normals_(line_normals(unit_vector(direction, "line direction", name))) {
   nodes_ = {a.node};
   if (lock_rotation) rotation_lock_.emplace(point_.frame(), JointFrame{}, q0);

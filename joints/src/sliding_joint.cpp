@@ -34,7 +34,7 @@ SlidingJoint::SlidingJoint(const SlidingJointParameters& parameters, core::Model
       upper_stop_(parameters.upper_stop) {
   const core::Configuration& q0 = model.state();
   slider_ = AttachedPoint(single_node_frame(parameters.slider.node, q0, where_),
-                          parameters.slider.offset);
+                          finite_point(parameters.slider.offset, "slider offset", where_));
   const int node = parameters.slider.node;
   if (node >= carrier_->first_node() &&
       node < carrier_->first_node() + carrier_->control_point_count())

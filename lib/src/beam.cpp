@@ -66,6 +66,11 @@ GeometricallyExactBeam::GeometricallyExactBeam(const BeamParameters& parameters,
   compute_reference_strains(configuration);
 }
 
+void GeometricallyExactBeam::missing_element(int e) const {
+  throw Error("element " + std::to_string(e) + " does not exist (the beam has " + std::to_string(element_count()) + ")",
+              where, "use an index in [0, element_count())");
+}
+
 int GeometricallyExactBeam::node(int control_point) const {
   if (control_point < 0 || control_point >= control_point_count_)
     throw Error("control point " + std::to_string(control_point) + " does not exist (the beam has " +
@@ -77,8 +82,10 @@ int GeometricallyExactBeam::node(int control_point) const {
 // Gauss points per element: p + 1 (full integration), or for p = 1 selective reduced integration:
 // the shear part of C at one point, the rest at two (003 §3.2).
 void GeometricallyExactBeam::build_elements(int quadrature_points) {
-  if (quadrature_points < 0)
-    throw Error("negative number of Gauss points", where, "give 0 (automatic) or a positive count");
+  if (quadrature_points < 0 || quadrature_points > iga::max_gauss_points)
+    throw Error("BeamParameters::quadrature_points = " + std::to_string(quadrature_points) +
+                    " is outside [0, " + std::to_string(iga::max_gauss_points) + "]",
+                where, "give 0 (automatic: p + 1) or a count up to " + std::to_string(iga::max_gauss_points));
   const Eigen::Matrix<double, 6, 6> C = stiffness_.matrix();
   struct Part {
     int points;
@@ -168,9 +175,18 @@ CenterlinePoint GeometricallyExactBeam::centerline_point(double u, int order) co
   return point;
 }
 
+void GeometricallyExactBeam::require_nodes(const Configuration& q, const char* function) const {
+  const int nodes = static_cast<int>(std::min(q.position.size(), q.rotation.size()));
+  if (nodes < first_node_ + control_point_count_)
+    throw Error("the configuration has " + std::to_string(nodes) + " frame nodes, the beam's are " +
+                    std::to_string(first_node_) + " … " + std::to_string(first_node_ + control_point_count_ - 1),
+                std::string(where) + "::" + function, "pass the model's state (model.state()) or a copy of it");
+}
+
 Eigen::Vector3d GeometricallyExactBeam::centerline_derivative(const Configuration& q,
                                                               const CenterlinePoint& point,
                                                               int k) const {
+  require_nodes(q, "centerline_derivative");
   const int first = node(point.first_control_point);
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   for (int I = 0; I <= degree_; ++I) x += point.shape(k, I) * q.position[first + I];
@@ -195,6 +211,7 @@ Eigen::MatrixXd GeometricallyExactBeam::sample_centerline(const Configuration& q
 }
 
 Eigen::Matrix3d GeometricallyExactBeam::rotation_at(const Configuration& q, double u) const {
+  require_nodes(q, "rotation_at");
   const CenterlinePoint point = centerline_point(u, 0);
   const detail::RelativeRotations rel = detail::relative_rotations(*this, point.element, q);
   Eigen::Vector3d theta = Eigen::Vector3d::Zero();

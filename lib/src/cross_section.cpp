@@ -13,17 +13,23 @@ namespace {
 
 void require_positive(double value, const char* name, const char* where) {
   if (!(value > 0.0) || !std::isfinite(value))
-    throw Error(std::string(name) + " must be positive and finite, got " + std::to_string(value),
+    throw Error(std::string(name) + " must be positive and finite, got " + significant(value),
                 where, std::string("give a positive ") + name);
+}
+
+/// An isotropic material's Poisson ratio lies in (−1, 0.5); NaN is refused too (it made the
+/// shear coefficients of a section NaN without a word).
+void require_poisson_ratio(double poisson_ratio, const char* where) {
+  if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5))
+    throw Error("Poisson's ratio must lie in (-1, 0.5), got " + significant(poisson_ratio), where,
+                "give an isotropic material's Poisson ratio");
 }
 
 }  // namespace
 
 void Material::validate() const {
   require_positive(young_modulus, "Young's modulus", "core::Material");
-  if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5))
-    throw Error("Poisson's ratio must lie in (-1, 0.5), got " + std::to_string(poisson_ratio),
-                "core::Material", "give an isotropic material's Poisson ratio");
+  require_poisson_ratio(poisson_ratio, "core::Material");
   if (!(density >= 0.0) || !std::isfinite(density))
     throw Error("density must be non-negative, got " + std::to_string(density), "core::Material",
                 "give the mass density in kg/m^3");
@@ -47,6 +53,7 @@ void CrossSection::validate() const {
 CrossSection CrossSection::rectangle(double width, double height, double poisson_ratio) {
   require_positive(width, "width", "core::CrossSection::rectangle");
   require_positive(height, "height", "core::CrossSection::rectangle");
+  require_poisson_ratio(poisson_ratio, "core::CrossSection::rectangle");
   const double b = std::max(width, height), h = std::min(width, height);
   const double pi = std::numbers::pi;
   double series = 0.0;
@@ -69,6 +76,7 @@ CrossSection CrossSection::circle(double diameter, double poisson_ratio) {
 // m = inner/outer diameter; m = 0 gives the solid circle's 6(1 + ν)/(7 + 6ν).
 CrossSection CrossSection::tube(double outer_diameter, double inner_diameter, double poisson_ratio) {
   require_positive(outer_diameter, "outer diameter", "core::CrossSection::tube");
+  require_poisson_ratio(poisson_ratio, "core::CrossSection::tube");
   if (!(inner_diameter >= 0.0 && inner_diameter < outer_diameter))
     throw Error("inner diameter must lie in [0, outer diameter)", "core::CrossSection::tube",
                 "give inner < outer, or 0 for a solid circle");

@@ -99,13 +99,20 @@ void Model::check_frame(int block, const char* where) const {
 int Model::add_rigid_body(const RigidBodyParameters& p) {
   const char* where = "core::Model::add_rigid_body";
   if (!(p.mass > 0.0) || !std::isfinite(p.mass))
-    throw Error("rigid body mass must be positive and finite, got " + std::to_string(p.mass), where,
+    throw Error("rigid body mass must be positive and finite, got " + significant(p.mass), where,
                 "give the mass in kg");
   check_finite(p.center_of_mass, "the centre of mass", where);
   if (!p.inertia.allFinite() || (p.inertia - p.inertia.transpose()).norm() > 1e-12 * p.inertia.norm() ||
       !(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(p.inertia).eigenvalues().minCoeff() > 0.0))
     throw Error("rigid body inertia tensor is not symmetric positive definite", where,
                 "give the inertia about the centre of mass in the body frame (kg m^2)");
+  // A mass distribution has J₁ + J₂ ≥ J₃ for its principal moments (J₁ + J₂ − J₃ = 2∫x₃² dm ≥ 0),
+  // equal for a flat body; the margin is round-off of the eigenvalues.
+  const Eigen::Vector3d J = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(p.inertia).eigenvalues();
+  if (J(0) + J(1) < J(2) * (1.0 - 1e-12))
+    throw Error("the principal moments of inertia " + significant(J(0)) + ", " + significant(J(1)) + ", " +
+                    significant(J(2)) + " break the triangle inequality J1 + J2 >= J3: no body has them",
+                where, "give the inertia of a mass distribution about its centre of mass");
   const int node = add_frame(p.center_of_mass, p.rotation);
   rigid_bodies_.push_back({node, p.mass, p.inertia});
   const int index = rigid_body_count() - 1;

@@ -365,10 +365,17 @@ struct ResultsWriter::Impl {
     check_centerlines(step);
   }
 
-  /// The values of integer scalars are whole numbers that fit in 32 bits.
+  /// Scalars are finite (NaN only where declared may_be_undefined); the values of integer
+  /// scalars are whole numbers that fit in 32 bits.
   void check_counters(const ResultsStep& step) const {
     for (std::size_t i = 0; i < step.scalars.size(); ++i) {
       const double value = step.scalars[i];
+      if (!std::isfinite(value) && !(std::isnan(value) && layout.scalars[i].may_be_undefined))
+        throw Error("step.scalars[" + std::to_string(i) + "] (" + layout.scalars[i].name + ") = " + format_double(value) +
+                        " is not finite",
+                    where("append") + " at step " + std::to_string(appended),
+                    "check the run that computed it, or declare the scalar may_be_undefined if NaN marks "
+                    "a step where it has no value");
       if (layout.scalars[i].integer &&
           !(value == std::trunc(value) && std::abs(value) <= std::numeric_limits<std::int32_t>::max()))
         throw Error("step.scalars[" + std::to_string(i) + "] = " + format_double(value) + " for the integer scalar " +

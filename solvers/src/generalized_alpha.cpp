@@ -47,7 +47,7 @@ std::string_view to_string(IterationMatrix strategy) {
 
 GeneralizedAlphaParameters GeneralizedAlphaParameters::from_spectral_radius(double rho) {
   if (!(rho >= 0.0 && rho <= 1.0))
-    throw Error("spectral radius rho_infinity = " + std::to_string(rho) + " is outside [0, 1]",
+    throw Error("spectral radius rho_infinity = " + significant(rho) + " is outside [0, 1]",
                 "solvers::GeneralizedAlphaParameters", "give 0 <= rho_infinity <= 1");
   GeneralizedAlphaParameters p;
   p.alpha_m = (2 * rho - 1) / (rho + 1);
@@ -130,6 +130,16 @@ struct GeneralizedAlpha::Implementation {
         options.max_cutbacks < 0)
       throw Error("tolerance must be positive and finite, max_iterations >= 1, max_cutbacks >= 0", where,
                   "fix the DynamicOptions");
+    // The constraint and residual tests may be switched off with +infinity, never with NaN (every
+    // comparison with NaN is false: a NaN tolerance failed every step as "Newton did not converge").
+    if (!(options.constraint_tolerance > 0.0) || !(options.residual_tolerance > 0.0))
+      throw Error("constraint_tolerance = " + significant(options.constraint_tolerance) + " and residual_tolerance = " +
+                      significant(options.residual_tolerance) + " must be positive (+inf: the test is off)",
+                  where, "fix the DynamicOptions' tolerances (NaN and values <= 0 are refused)");
+    if (!(options.modified_newton_contraction > 0.0 && options.modified_newton_contraction <= 1.0))
+      throw Error("modified_newton_contraction = " + significant(options.modified_newton_contraction) +
+                      " is outside (0, 1]",
+                  where, "give the contraction factor that triggers a refactorization, e.g. 0.5");
     return GeneralizedAlphaParameters::from_spectral_radius(options.spectral_radius);
   }
 
@@ -242,6 +252,13 @@ struct GeneralizedAlpha::Implementation {
     evaluate(t, nullptr, 1.0);
     // The balance starts at t = 0 with the consistent accelerations.
     if (!initialized) initial_energy = mechanical_energy();
+    // Finite inputs may still overflow in the energies (a mass of 1e300 kg at z = -1e300 m): the
+    // balance would be NaN from the start (found by tests/input/fuzz_test.cpp).
+    if (!std::isfinite(mechanical_energy()))
+      throw Error("the mechanical energy at t = " + significant(t) + " is not finite (kinetic, strain or gravity "
+                  "potential overflows)",
+                  "solvers::GeneralizedAlpha::initialize",
+                  "check the model's masses, positions, velocities and gravity for absurd magnitudes");
     last_work_force = work_force();
     initialized = true;
   }
@@ -287,7 +304,7 @@ struct GeneralizedAlpha::Implementation {
     algorithmic_acceleration = acceleration;
     lambda = solution.tail(assembly.multiplier_count());
     if (!solution.allFinite())
-      throw Error("the consistent accelerations are not finite at t = " + std::to_string(t),
+      throw Error("the consistent accelerations are not finite at t = " + significant(t),
                   "solvers::GeneralizedAlpha",
                   "check the model's masses, loads and velocities for NaN or infinite values");
   }
@@ -312,11 +329,11 @@ struct GeneralizedAlpha::Implementation {
         model.state() = given;
         evaluate(t, nullptr, 1.0);
         throw Error("the configuration could not be projected onto the constraints " + what + " at t = " +
-                        std::to_string(t) + " (|Phi| = " + std::to_string(residual) + " after " +
+                        significant(t) + " (|Phi| = " + significant(residual) + " after " +
                         std::to_string(iteration) + " iterations)",
                     "solvers::GeneralizedAlpha",
                     "check that the constraints can hold together at this state (joint positions, axes and "
-                    "drivers' angles at t = " + std::to_string(t) + ")");
+                    "drivers' angles at t = " + significant(t) + ")");
       }
       Eigen::VectorXd state = Eigen::VectorXd::Zero(assembly.size());
       state.head(n) = change;
@@ -566,6 +583,13 @@ struct GeneralizedAlpha::Implementation {
       if (need_matrix && expect_convergence) guarded_evaluate(t_next, &coefficients, beta_prime);
       if (need_matrix) {
         if (options.iteration_matrix != IterationMatrix::frozen) ++counters.jtheta_evaluations;
+        // A non-finite tangent at an iterate fails the iteration (the step is cut back), as a
+        // non-finite residual does; it is no sign of a redundant constraint.
+        const auto& matrix = assembly.pattern().matrix();
+        if (!Eigen::Map<const Eigen::VectorXd>(matrix.valuePtr(), matrix.nonZeros()).allFinite()) {
+          last_failure = "the iteration matrix has a NaN or infinite entry";
+          return false;
+        }
         factorize(t_next);
         factorized_step = h;
         refactor_requested = false;

@@ -7,6 +7,7 @@
 #include <btf.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace spar::solvers {
@@ -111,6 +112,13 @@ void LinearSolver::factorize(const SparseMatrix& A) {
     throw Error("sparsity pattern differs from the analyzed one", where("factorize"),
                 "call analyze(A) again after a change of pattern");
   factorized_ = false;
+  // KLU factorizes a NaN matrix and solves to NaN; every backend refuses it here, naming the entry.
+  for (int column = 0; column < n; ++column)
+    for (SparseMatrix::InnerIterator entry(A, column); entry; ++entry)
+      if (!std::isfinite(entry.value()))
+        throw Error("the matrix has the non-finite entry " + significant(entry.value()) + " at (" +
+                        std::to_string(entry.row()) + ", " + std::to_string(column) + ")",
+                    where("factorize"), "check the model: an element or a constraint gave a NaN or infinite tangent");
   if (factorize_values(A) == FactorizationOutcome::singular)
     throw Error(
         "numerically singular iteration matrix — check for a redundant constraint or an "

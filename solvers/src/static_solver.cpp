@@ -3,6 +3,10 @@
 #include "round_off.hpp"
 #include "system_assembly.hpp"
 
+#include <spar/core/elements/load_elements.hpp>
+
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <Eigen/SparseCholesky>
 
@@ -19,6 +23,22 @@ double free_norm(const Eigen::VectorXd& v, const std::vector<char>& fixed, int c
   for (int i = 0; i < count; ++i)
     if (!fixed[i]) norm = std::max(norm, std::abs(v(i)));
   return norm;
+}
+
+/// Whether the model carries a moment load (nodal or distributed, material or inertial): such a
+/// moment does no work that a potential gives for 3D rotations, so the energy criterion of
+/// stability does not apply (docs/errors.md).
+bool has_moment_load(const core::Model& model) {
+  for (int i = 0; i < model.element_count(); ++i) {
+    const core::Element& element = model.element(i);
+    const core::Load* load = nullptr;
+    if (const auto* nodal = dynamic_cast<const core::NodalLoadElement*>(&element)) load = &nodal->load();
+    if (const auto* distributed = dynamic_cast<const core::DistributedLoadElement*>(&element))
+      load = &distributed->load();
+    if (load && (std::holds_alternative<core::NodalMoment>(*load) || std::holds_alternative<core::DistributedMoment>(*load)))
+      return true;
+  }
+  return false;
 }
 
 /// Newton's method for one load factor, in the chart q = q_n ⊕ φ about the converged state
@@ -38,6 +58,30 @@ public:
   }
 
   const Eigen::VectorXd& multipliers() const { return lambda_; }
+
+  /// The number of negative eigenvalues of the tangent K on the null space of the constraints'
+  /// Jacobian B at the converged state, or -1 (see StaticReport::unstable_directions). The
+  /// iteration matrix A = [K Bᵀ; B 0] (fixed dofs: unit rows) has, by Sylvester's law of inertia
+  /// and the inertia of a saddle-point matrix (Gould 1985), those negative eigenvalues plus m,
+  /// m = rows of B; its LDLᵀ factorization gives the inertia as the signs of D. (An LU with
+  /// pivoting does not: its U's diagonal signs say nothing.) K and B first, multipliers last
+  /// (natural ordering), so the multipliers' pivots are the Schur complement −B K⁻¹ Bᵀ.
+  int unstable_directions() {
+    if (has_moment_load(model_)) return -1;
+    Eigen::VectorXd unused = Eigen::VectorXd::Zero(assembly_.size());
+    assembly_.pattern().apply_dirichlet(model_.fixed_dofs(), unused);
+    const SparseMatrix& A = assembly_.pattern().matrix();
+    const SparseMatrix At = A.transpose();
+    // The converged chart makes K symmetric at equilibrium up to the residual; a load whose
+    // tangent leaves a larger non-symmetric part has no energy whose minimum could be assessed.
+    if ((A - At).norm() > 1e-6 * A.norm()) return -1;
+    const SparseMatrix S = 0.5 * (A + At);
+    const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(S);
+    if (ldlt.info() != Eigen::Success) return -1;
+    const Eigen::VectorXd& D = ldlt.vectorD();
+    if (!D.allFinite() || (D.array() == 0.0).any()) return -1;  // singular: a critical state
+    return static_cast<int>((D.array() < 0.0).count()) - assembly_.multiplier_count();
+  }
   void set_multipliers(const Eigen::VectorXd& lambda) { lambda_ = lambda; }
 
   /// Iterates from the converged state to equilibrium at `load_factor`; false if it does not
@@ -180,6 +224,7 @@ StaticReport solve_static(core::Model& model, const StaticOptions& options,
     increment /= 2;
   }
   report.multipliers = newton.multipliers();
+  report.unstable_directions = newton.unstable_directions();
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

@@ -4,6 +4,8 @@
 #include <spar/core/elements/geometrically_exact_beam_element.hpp>
 #include <spar/lie/hat.hpp>
 
+#include <cmath>
+
 namespace spar::core {
 
 namespace {
@@ -20,7 +22,11 @@ void add_external_force(const Eigen::Ref<const Eigen::VectorXd>& f, const Elemen
 
 double load_scale(const ElementInput& in, const std::function<double(double)>& history) {
   if (!in.dynamic() || !history) return in.load_factor;
-  return in.load_factor * history(in.time);
+  const double factor = history(in.time);
+  if (!std::isfinite(factor))
+    throw Error("the load history gives " + significant(factor) + " at t = " + significant(in.time),
+                "core::Model::add_load (LoadHistory)", "give a history that is finite at every time of the run");
+  return in.load_factor * factor;
 }
 
 NodalLoadElement::NodalLoadElement(const Load& load, std::function<double(double)> history,

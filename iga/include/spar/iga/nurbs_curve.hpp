@@ -91,6 +91,8 @@ public:
   Point point(double u) const { return derivatives(u, 0).col(0); }
 
   /// [C, C′, …, C^(order)](u), derivatives with respect to u, 0 ≤ order ≤ max_derivative_order.
+  /// Throws spar::Error when they overflow (weights or knot spans so extreme, e.g. a weight of
+  /// 1e-300 next to 1, that the rational basis leaves the doubles).
   Derivatives derivatives(double u, int order) const {
     detail::check_derivative_order(order, "iga::NurbsCurve::derivatives");
     const int span = knots_.find_span(u);
@@ -100,6 +102,11 @@ public:
     Derivatives D(Dim, order + 1);
     for (int k = 0; k <= order; ++k)
       D.col(k) = control_points_.middleCols(span - p, p + 1) * R.row(k).head(p + 1).transpose();
+    if (!D.allFinite())
+      throw Error("the curve's derivatives up to order " + std::to_string(order) + " overflow at u = " +
+                      detail::number(u),
+                  "iga::NurbsCurve::derivatives",
+                  "give weights of comparable size and knot spans that are not vanishingly small");
     return D;
   }
 

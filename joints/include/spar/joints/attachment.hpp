@@ -76,6 +76,10 @@ JointFrames joint_frames(const Attachment& a, const Attachment& b, const core::C
 /// block 0. Raises spar::Error naming `where` otherwise.
 JointFrame single_node_frame(int node, const core::Configuration& q0, std::string_view where);
 
+/// `point` itself, or a spar::Error naming `where` and the argument `name` when it has a NaN or
+/// infinite coordinate (an attachment offset, a point on a line, a ground point).
+const Eigen::Vector3d& finite_point(const Eigen::Vector3d& point, std::string_view name, std::string_view where);
+
 /// `direction` / ‖direction‖, or a spar::Error naming `where` and the argument `name` when it is
 /// zero or not finite.
 Eigen::Vector3d unit_vector(const Eigen::Vector3d& direction, std::string_view name,

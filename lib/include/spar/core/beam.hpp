@@ -35,7 +35,7 @@ struct BeamParameters {
   /// `section_axis_hint` (A₃ = the hint made orthogonal to A₁).
   std::vector<Eigen::Matrix3d> reference_rotations;
   Eigen::Vector3d section_axis_hint = Eigen::Vector3d::UnitZ();
-  /// Gauss points per element; 0 chooses p + 1, and for p = 1 selective reduced integration
+  /// Gauss points per element (at most iga::max_gauss_points); 0 chooses p + 1, and for p = 1 selective reduced integration
   /// (one point for the two shears, two for everything else; 003 §3.2).
   int quadrature_points = 0;
 };
@@ -86,7 +86,11 @@ public:
   int first_node() const { return first_node_; }
   /// Global node of control point I.
   int node(int control_point) const;
-  const BeamElement& element(int e) const { return elements_[e]; }
+  /// Element e; throws spar::Error for e outside [0, element_count()).
+  const BeamElement& element(int e) const {
+    if (e < 0 || e >= element_count()) missing_element(e);
+    return elements_[e];
+  }
   const iga::NurbsCurve<3>& reference_centerline() const { return centerline_; }
   /// The constitutive matrices integrated by the Gauss points (C for p ≥ 2; for p = 1 with
   /// selective integration, C without the shear block and the shear block alone).
@@ -112,6 +116,10 @@ public:
 
 private:
   void build_elements(int quadrature_points);
+  [[noreturn]] void missing_element(int e) const;
+  /// Throws spar::Error unless q holds the beam's nodes (a configuration of another model, or an
+  /// empty one, would be read out of bounds).
+  void require_nodes(const Configuration& q, const char* function) const;
   void compute_reference_strains(const Configuration& reference);
 
   iga::NurbsCurve<3> centerline_;

@@ -27,6 +27,10 @@ struct ResultsQuantity {
   /// Stored as 32-bit integers (counters such as newton_iterations); every value appended must
   /// then be a whole number. Scalars only.
   bool integer = false;
+  /// NaN marks a step where the quantity is not defined (e.g. the material coordinate of a slider
+  /// that has left its beam). Without this flag a NaN or infinite value is refused: a NaN result
+  /// is never written silently. Scalars only.
+  bool may_be_undefined = false;
 };
 
 /// A quantity sampled at every centerline point of every beam, e.g. the velocity or the arc

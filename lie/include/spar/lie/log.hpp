@@ -24,7 +24,7 @@ void check_rotation(const Eigen::MatrixBase<Derived>& R, std::string_view where)
   const Scalar orthogonality = (R.transpose() * R - Matrix3<Scalar>::Identity()).norm();
   if (!(orthogonality <= Scalar(rotation_tolerance)))
     throw Error("the matrix is not orthogonal: |R^T R - I| = " +
-                    std::to_string(static_cast<double>(orthogonality)) + " > 1e-9",
+                    significant(static_cast<double>(orthogonality)) + " > 1e-9",
                 where, "pass a rotation matrix, or re-orthogonalize it first");
   if (!(R.determinant() > 0))
     throw Error("the matrix is a reflection (det R <= 0), not a rotation", where,

@@ -42,6 +42,12 @@ struct StaticReport {
   int cutbacks = 0;
   int factorizations = 0;
   double wall_seconds = 0.0;
+  /// The stability of the final state: the number of negative eigenvalues of the tangent
+  /// stiffness on the constraints' null space (docs/errors.md). 0: stable; > 0: an unstable
+  /// equilibrium (e.g. a straight column above its Euler load), which a real structure leaves;
+  /// -1: not assessed (moment loads, which have no potential for 3D rotations; a tangent that is
+  /// not symmetric to 1e-6 of its norm; a singular one at a critical point).
+  int unstable_directions = -1;
 };
 
 /// Thrown when a load step does not converge even after the allowed cut-backs. The model keeps

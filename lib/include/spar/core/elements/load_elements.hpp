@@ -28,6 +28,7 @@ public:
   void evaluate(const ElementInput& in, const ElementRequest& request,
                 ElementOutput& out) const override;
   std::string name() const override { return "load " + std::to_string(load_index_); }
+  const Load& load() const { return load_; }
 
 private:
   Load load_;
@@ -49,6 +50,7 @@ public:
   std::string name() const override {
     return "load " + std::to_string(load_index_) + " on element " + std::to_string(element_);
   }
+  const Load& load() const { return load_; }
 
 private:
   Load load_;

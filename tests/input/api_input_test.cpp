@@ -1,0 +1,235 @@
+// The public API refuses the bad input of issue 15's audit with a spar::Error naming it: each
+// case is a call and a word its message must hold. Crashes (a configuration of the wrong size),
+// hangs (100 000 Gauss points), std::bad_alloc (2^31 elements) and silent NaN (a NaN point,
+// Poisson ratio, load history, tolerance, results scalar, matrix) are all among them.
+#include <spar/core/core.hpp>
+#include <spar/iga/iga.hpp>
+#include <spar/joints/joints.hpp>
+#include <spar/solvers/generalized_alpha.hpp>
+#include <spar/solvers/linear_solver.hpp>
+#include <spar/solvers/static_solver.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using namespace spar;
+
+namespace {
+
+constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
+constexpr double infinite = std::numeric_limits<double>::infinity();
+
+/// A steel cantilever of 4 cubic elements along +X, clamped at the root, with inertia.
+struct Cantilever {
+  core::Model model;
+  int beam = 0, root = 0, tip = 0;
+  Cantilever() {
+    const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
+    const core::CrossSection section = core::CrossSection::rectangle(0.01, 0.01, 0.3);
+    beam = model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 4, 3),
+                           .stiffness = core::SectionStiffness::from(steel, section),
+                           .inertia = core::SectionInertia::from(steel, section)});
+    root = model.beam(beam).node(0);
+    tip = model.beam(beam).node(model.beam(beam).control_point_count() - 1);
+    model.fix(root);
+  }
+};
+
+core::RigidBodyParameters top() {
+  return {.center_of_mass = Eigen::Vector3d(0, 1, 0), .mass = 15.0,
+          .inertia = Eigen::Vector3d(0.234375, 0.46875, 0.234375).asDiagonal()};
+}
+
+/// A few dynamic steps of the cantilever under `options` with a tip force of the given history.
+void run_dynamics(const solvers::DynamicOptions& options, core::LoadHistory history = {}) {
+  Cantilever c;
+  c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)}, std::move(history));
+  solvers::GeneralizedAlpha integrator(c.model, {}, options);
+  integrator.initialize();
+  for (int i = 0; i < 3; ++i) integrator.step();
+}
+
+struct Case {
+  std::string name;
+  std::function<void()> call;
+  std::string word;
+};
+
+}  // namespace
+
+TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[input]") {
+  const std::vector<Case> cases = {
+      {"position_at with an empty configuration (SIGSEGV)",
+       [] { Cantilever c; c.model.beam(c.beam).position_at(core::Configuration{}, 0.5); }, "frame nodes"},
+      {"rotation_at with an empty configuration",
+       [] { Cantilever c; c.model.beam(c.beam).rotation_at(core::Configuration{}, 0.5); }, "frame nodes"},
+      {"sample_centerline with an empty configuration",
+       [] { Cantilever c; c.model.beam(c.beam).sample_centerline(core::Configuration{}, 3); }, "frame nodes"},
+      {"beam element 99 (read out of bounds)",
+       [] { Cantilever c; c.model.beam(c.beam).element(99); }, "element 99 does not exist"},
+      {"100 000 Gauss points (hung)",
+       [] {
+         core::Model model;
+         model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 1, 3),
+                         .stiffness = core::SectionStiffness::from({.young_modulus = 1e9, .poisson_ratio = 0.3},
+                                                                   core::CrossSection::circle(0.01, 0.3)),
+                         .quadrature_points = 100000});
+       },
+       "quadrature_points"},
+      {"a Gauss rule of 100 000 points", [] { iga::gauss_legendre(100000); }, "1 to 64 points"},
+      {"open_uniform with 2^31 - 1 elements (std::bad_alloc)",
+       [] { iga::KnotVector::open_uniform(2147483647, 1, 0); }, "elements"},
+      {"open_uniform of degree 2^31 - 1", [] { iga::KnotVector::open_uniform(1, 2147483647, 0); }, "degree"},
+      {"a rigid body with a NaN centre of mass",
+       [] { core::Model m; auto p = top(); p.center_of_mass.x() = not_a_number; m.add_rigid_body(p); }, "centre of mass"},
+      {"a rigid body with an infinite centre of mass",
+       [] { core::Model m; auto p = top(); p.center_of_mass.y() = infinite; m.add_rigid_body(p); }, "centre of mass"},
+      {"an inertia diag(1, 1, 5) that breaks the triangle inequality",
+       [] { core::Model m; auto p = top(); p.inertia = Eigen::Vector3d(1, 1, 5).asDiagonal(); m.add_rigid_body(p); },
+       "triangle inequality"},
+      {"an inertia with I3 = -1e-9 prints its value",
+       [] { core::Model m; auto p = top(); p.inertia = Eigen::Vector3d(1, 1, -1e-9).asDiagonal(); m.add_rigid_body(p); },
+       "positive definite"},
+      {"attach_at a NaN point",
+       [] { Cantilever c; joints::attach_at(c.tip, Eigen::Vector3d(not_a_number, 0, 0), c.model.state()); }, "attachment point"},
+      {"a NaN joint offset",
+       [] {
+         Cantilever c;
+         joints::SphericalJoint(joints::Attachment{.node = c.tip, .offset = Eigen::Vector3d(0, not_a_number, 0)},
+                                joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, c.model.state());
+       },
+       "offset of attachment a"},
+      {"a NaN prismatic line point",
+       [] {
+         Cantilever c;
+         joints::PrismaticJoint(joints::Attachment{.node = c.tip, .offset = Eigen::Vector3d::Zero()},
+                                Eigen::Vector3d(not_a_number, 0, 0), Eigen::Vector3d::UnitX(), false, c.model.state());
+       },
+       "line point"},
+      {"Poisson's ratio NaN in CrossSection::rectangle", [] { core::CrossSection::rectangle(0.01, 0.01, not_a_number); },
+       "Poisson"},
+      {"Poisson's ratio NaN in CrossSection::circle", [] { core::CrossSection::circle(0.01, not_a_number); }, "Poisson"},
+      {"a NaN force in add_load",
+       [] { Cantilever c; c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(not_a_number, 0, 0)}); },
+       "force"},
+      {"a NaN follower moment",
+       [] {
+         Cantilever c;
+         c.model.add_load(core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, not_a_number),
+                                            .frame = core::MomentFrame::material});
+       },
+       "moment"},
+      {"set_gravity(NaN)", [] { core::Model m; m.set_gravity(Eigen::Vector3d(0, 0, not_a_number)); }, "gravity"},
+      {"static residual_tolerance = -1", [] { Cantilever c; solvers::solve_static(c.model, {.residual_tolerance = -1}); },
+       "tolerance"},
+      {"static increment_tolerance = NaN",
+       [] { Cantilever c; solvers::solve_static(c.model, {.increment_tolerance = not_a_number}); }, "tolerance"},
+      {"dynamic tolerance = NaN", [] { run_dynamics({.tolerance = not_a_number}); }, "tolerance must be positive"},
+      {"dynamic residual_tolerance = -1", [] { run_dynamics({.residual_tolerance = -1}); }, "residual_tolerance = -1"},
+      {"dynamic residual_tolerance = NaN", [] { run_dynamics({.residual_tolerance = not_a_number}); }, "residual_tolerance = nan"},
+      {"dynamic constraint_tolerance = NaN", [] { run_dynamics({.constraint_tolerance = not_a_number}); },
+       "constraint_tolerance = nan"},
+      {"modified_newton_contraction = NaN", [] { run_dynamics({.modified_newton_contraction = not_a_number}); },
+       "modified_newton_contraction"},
+      {"a spectral radius of 1.5", [] { run_dynamics({.spectral_radius = 1.5}); }, "1.5 is outside [0, 1]"},
+      {"a NaN load history in dynamics", [] { run_dynamics({}, [](double t) { return t > 0.0015 ? not_a_number : 1.0; }); },
+       "the load history gives nan at t = 0.0015"},
+      {"set_velocity(NaN)",
+       [] {
+         Cantilever c;
+         solvers::GeneralizedAlpha integrator(c.model, {}, {});
+         integrator.set_velocity(c.tip, Eigen::Vector3d(not_a_number, 0, 0), Eigen::Vector3d::Zero());
+       },
+       "NaN"},
+      // Found by the fuzz test (tests/input/fuzz_test.cpp).
+      {"degree elevation across a discontinuity (read past its arrays)",
+       [] { iga::degree_elevation_operator(iga::KnotVector({0, 0, 0.5, 0.5, 1, 1}, 1), 1); }, "multiplicity p + 1"},
+      {"degree elevation by INT_MAX (overflowed past the check)",
+       [] { iga::degree_elevation_operator(iga::KnotVector::open_uniform(2, 2, 1), 2147483647); }, "by 2147483647"},
+      {"knot insertion INT_MAX times (overflowed past the check)",
+       [] { iga::knot_insertion_operator(iga::KnotVector::open_uniform(2, 2, 1), 0.25, 2147483647); },
+       "2147483647 times"},
+      {"h-refinement into INT_MAX parts", [] { iga::uniform_refinement_knots(iga::KnotVector::open_uniform(2, 2, 1), 2147483647); },
+       "iga::max_knots"},
+      {"a knot span of 5e-324 (refined to a curve 13 % away)",
+       [] { iga::KnotVector({0, 0, 0, 0, 4.9406564584124654e-324, 0.5, 1, 1, 1, 1}, 3); }, "differ by less than"},
+      {"curve derivatives that overflow (a weight of 5e-324 next to 1)",
+       [] {
+         const iga::KnotVector U = iga::KnotVector::open_uniform(1, 2, 1);
+         Eigen::Matrix3Xd points = Eigen::Matrix3Xd::Ones(3, 3);
+         iga::NurbsCurve<3>(U, points, Eigen::Vector3d(4.9406564584124654e-324, 1, 1)).derivatives(0.0, 2);
+       },
+       "overflow at u = 0"},
+      {"a body whose gravity potential overflows (1e300 kg at z = -1e300 m)",
+       [] {
+         core::Model m;
+         auto p = top();
+         p.mass = 1e300;
+         p.center_of_mass.z() = -1e300;
+         m.fix(m.rigid_body(m.add_rigid_body(p)).node);
+         m.set_gravity(Eigen::Vector3d(0, 0, -9.81));
+         solvers::GeneralizedAlpha(m, {}, {}).initialize();
+       },
+       "mechanical energy at t = 0 is not finite"},
+      {"a rotation with 1e-7 noise prints the size of the noise",
+       [] {
+         Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+         R(0, 1) = 1e-7;
+         core::Model m;
+         m.add_frame(Eigen::Vector3d::Zero(), R);
+       },
+       "1e-07"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    std::string message;
+    try {
+      c.call();
+    } catch (const Error& error) {
+      message = error.what();
+    }
+    CHECK_THAT(message, Catch::Contains(c.word));
+  }
+}
+
+TEST_CASE("every linear solver refuses a NaN matrix and names the entry", "[input]") {
+  Eigen::SparseMatrix<double> A(2, 2);
+  A.insert(0, 0) = 1.0;
+  A.insert(1, 1) = 1.0;
+  A.insert(0, 1) = 0.5;
+  A.makeCompressed();
+  for (const auto kind : {solvers::LinearSolverKind::klu, solvers::LinearSolverKind::umfpack,
+                          solvers::LinearSolverKind::eigen_lu}) {
+    auto solver = solvers::make_linear_solver(kind);
+    solver->analyze(A);
+    A.coeffRef(1, 1) = not_a_number;
+    CHECK_THROWS_WITH(solver->factorize(A), Catch::Contains("non-finite entry nan at (1, 1)"));
+    A.coeffRef(1, 1) = 1.0;
+    solver->factorize(A);  // and works again with finite values
+  }
+}
+
+TEST_CASE("ResultsWriter refuses a NaN scalar unless it is declared may_be_undefined", "[input]") {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("spar_input_results_" + std::to_string(getpid()) + ".h5");
+  core::ResultsLayout layout;
+  layout.velocities = false;
+  layout.scalars = {{.name = "energy", .unit = "J", .description = "energy"},
+                    {.name = "material_coordinate", .unit = "m", .description = "undefined once released",
+                     .may_be_undefined = true}};
+  {
+    core::ResultsWriter writer(file.string(), layout);
+    writer.append({.time = 0.0, .scalars = {1.0, not_a_number}});  // NaN where declared: accepted
+    CHECK_THROWS_WITH(writer.append({.time = 1.0, .scalars = {not_a_number, 0.0}}), Catch::Contains("(energy) = nan"));
+    CHECK_THROWS_WITH(writer.append({.time = 1.0, .scalars = {1.0, infinite}}), Catch::Contains("is not finite"));
+  }
+  std::filesystem::remove(file);
+  std::filesystem::remove(std::filesystem::path(file).replace_extension(".xmf"));
+}
