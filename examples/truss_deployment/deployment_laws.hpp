@@ -48,7 +48,9 @@ inline joints::TimeFunction deployment_angle(const std::string& name, double bet
   (void)law_shape(name, 0.0);  // an unknown name fails here, not at the first step
   const double range = beta_f - beta0;
   const auto tau = [t_f](double t) { return std::clamp(t / t_f, 0.0, 1.0); };
-  const auto inside = [t_f](double t) { return t > 0.0 && t < t_f; };
+  // The rates are the right derivatives at the ends: the linear law starts at (β_f − β₀)/t_f at
+  // t = 0 (so that the initial assembly starts the unit moving with it) and stops at t_f.
+  const auto inside = [t_f](double t) { return t >= 0.0 && t < t_f; };
   return {.value = [=](double t) { return range * law_shape(name, tau(t)).g; },
           .first_derivative = [=](double t) { return inside(t) ? range * law_shape(name, tau(t)).dg / t_f : 0.0; },
           .second_derivative =

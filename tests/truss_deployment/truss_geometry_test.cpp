@@ -100,7 +100,7 @@ TEST_CASE("deployment laws (003 eqs. 54-57): from beta0 to beta_f in t_f, deriva
       CHECK(std::abs((f.first_derivative(t + dt) - f.first_derivative(t - dt)) / (2 * dt) - f.second_derivative(t)) <= 1e-9);
     }
     // The smooth laws start and end at rest; the linear one runs at (β_f − β₀)/t_f throughout.
-    const double rate0 = f.first_derivative(1e-12), rate_f = f.first_derivative(t_f - 1e-12);
+    const double rate0 = f.first_derivative(0.0), rate_f = f.first_derivative(t_f - 1e-12);
     if (std::string(name) == "linear") {
       CHECK(std::abs(rate0 - (beta_f - beta0) / t_f) <= 1e-15);
     } else {
