@@ -25,6 +25,7 @@
 
 #include <centerline_fields.hpp>
 #include <cli.hpp>
+#include <run_counters.hpp>
 #include <energy_balance.hpp>
 
 #include "four_bar_model.hpp"
@@ -200,11 +201,7 @@ int main(int argc, char** argv) try {
   }
   progress.finish();
   const solvers::DynamicCounters& counters = integrator.counters();
-  results.write_attribute("t_end", integrator.time());
-  results.write_attribute("steps", counters.steps);
-  results.write_attribute("newton_iterations", counters.newton_iterations);
-  results.write_attribute("factorizations", counters.factorizations);
-  results.write_attribute("cutbacks", counters.cutbacks);
+  examples::write_run_counters(results, integrator);
   results.close();
 
   // 5. Report.

@@ -26,6 +26,7 @@
 #include <spar/joints/joints.hpp>
 
 #include <cli.hpp>
+#include <run_counters.hpp>
 #include <energy_balance.hpp>
 
 #include "truss_model.hpp"
@@ -205,6 +206,7 @@ int main(int argc, char** argv) try {
   for (std::size_t k = 0; k < events.size(); ++k)
     results.write_attribute("event_" + std::to_string(k), std::to_string(events[k].first) + " s: " + events[k].second);
   if (lock_time) results.write_attribute("lock_time", *lock_time);
+  examples::write_run_counters(results, integrator);
   results.close();
   const Eigen::Vector3d d = q.position[unit.d_node];
   std::printf("truss_deployment case %d (%s), %d elements per member, h = %g s, %s: sliders locked at",
