@@ -279,7 +279,7 @@ TipMomentRun tip_moment_run(core::MomentFrame frame, core::LoadHistory history, 
 }  // namespace
 
 TEST_CASE("dynamics: a tip moment EI/L on a steel cantilever, ramped over 5 ms, runs at h = 1e-3",
-          "[loads][dynamics][validation]") {
+          "[loads][dynamics]") {
   // The audit's run: a dead tip moment EI/L applied suddenly at t = 0, h = 1e-3, ρ∞ = 0.9 —
   // Newton fails (frames turning by π within a step) after 14 ms with h cut to 3.9e-6, and
   // likewise for a follower moment; it is not the dead load. A step moment on the tip section
@@ -323,7 +323,7 @@ TEST_CASE("dynamics: a ramped dead tip moment EI/L at rho_infinity = 1 conserves
 }
 
 TEST_CASE("dynamics: a suddenly applied tip moment EI/L runs once the step resolves it",
-          "[loads][dynamics][validation]") {
+          "[loads][dynamics]") {
   // The step load of the audit with h = 1e-4 instead of 1e-3: no cut-back over 0.05 s (measured
   // 0 over 0.2 s). See the previous test for why h = 1e-3 fails.
   const TipMomentRun run = tip_moment_run(core::MomentFrame::inertial, {}, 1e-4, 0.05);
