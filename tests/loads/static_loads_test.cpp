@@ -3,6 +3,7 @@
 // Reissner's planar rod solved by shooting with RK4 (tests/support/planar_rod.hpp) for forces,
 // the closed form of a pure bending moment for moments, and the distributed force ρA g for
 // gravity.
+#include <spar/lie/lie.hpp>
 #include <spar/solvers/static_solver.hpp>
 
 #include <catch2/catch.hpp>
@@ -175,5 +176,46 @@ TEST_CASE("statics: the tip-force cantilever converges to Reissner's rod as h^2,
     INFO("p = " << degree << ": tip error " << errors[0] << " -> " << errors[1] << " m from " << coarse << " to "
                 << 2 * coarse << " elements, observed order " << order);
     CHECK(std::fabs(order - 2 * degree) <= 0.3);
+  }
+}
+
+TEST_CASE("nodal moments: the load tangent is the derivative of the residual along q + Delta",
+          "[loads]") {
+  // r = −Rᵀ M for an inertial (dead) moment, whose material components turn with the node: its
+  // stiffness K = ∂r(R exp(Δφ))/∂Δφ = −[RᵀM]× is not zero; a material (follower) moment has
+  // r = −M and K = 0. Central differences of step 1e-6 on O(1) data: round-off ~1e-10, bound 1e-8
+  // relative to |M| (a dropped or transposed tangent is off by O(1)).
+  const Eigen::Vector3d M(0.7, -1.1, 0.4);
+  for (const core::MomentFrame frame : {core::MomentFrame::inertial, core::MomentFrame::material}) {
+    core::Model model;
+    const Eigen::Matrix3d R = lie::exp(Eigen::Vector3d(0.4, -1.3, 2.2));
+    const int node = model.add_frame(Eigen::Vector3d(0.1, 0.2, 0.3), R);
+    model.add_load(core::NodalMoment{.node = node, .moment = M, .frame = frame});
+    const core::Element& load = model.element(model.element_count() - 1);
+    const core::ElementRequest request{.residual = true, .stiffness = true};
+    const core::ElementInput in{.q = &model.state()};
+    core::ElementOutput out;
+    out.reset(6, request);
+    load.evaluate(in, request, out);
+    Eigen::MatrixXd fd(6, 6);
+    for (int i = 0; i < 6; ++i) {
+      Eigen::VectorXd column = Eigen::VectorXd::Zero(6);
+      for (const double sign : {1.0, -1.0}) {
+        Eigen::VectorXd delta = Eigen::VectorXd::Zero(6);
+        delta(i) = sign * 1e-6;
+        core::Configuration q = model.state();
+        q.assign_increment(model.state(), delta);
+        const core::ElementInput perturbed{.q = &q};
+        core::ElementOutput o;
+        o.reset(6, {.residual = true});
+        load.evaluate(perturbed, {.residual = true}, o);
+        column += sign * o.residual / 2e-6;
+      }
+      fd.col(i) = column;
+    }
+    INFO((frame == core::MomentFrame::inertial ? "inertial" : "material") << " moment: K\n"
+         << out.stiffness << "\nfinite differences\n" << fd);
+    CHECK((out.stiffness - fd).norm() <= 1e-8 * M.norm());
+    if (frame == core::MomentFrame::inertial) CHECK(out.stiffness.norm() >= 0.5 * M.norm());
   }
 }
