@@ -128,7 +128,7 @@ int main(int argc, char** argv) try {
   examples::JsonSummary()
       .add("elements", elements).add("modes", static_cast<int>(f.size()))
       .add("bending_modes_matched", matched).add("max_relative_error", worst)
-      .add("first_frequency_hz", f.size() > 1 ? f(1) : NAN)
+      .add("first_frequency_hz", f.size() > 1 ? std::optional<double>(f(1)) : std::nullopt)
       .print();
   return 0;
 } catch (const std::exception& error) {

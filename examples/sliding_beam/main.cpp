@@ -32,6 +32,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
+#include <string>
 
 using namespace spar;
 
@@ -144,7 +146,7 @@ int main(int argc, char** argv) try {
   };
   record();
   core::ProgressBar progress(t_end, "sliding_beam");
-  double arrival_time = NAN;
+  std::optional<double> arrival_time;  // none when the run ends before the slider reaches B
   while (integrator.time() < t_end - 0.5 * h) {
     integrator.step();
     if (slide.locked()) {
@@ -159,7 +161,7 @@ int main(int argc, char** argv) try {
   }
   progress.finish();
   const solvers::DynamicCounters& counters = integrator.counters();
-  results.write_attribute("arrival_time", arrival_time);
+  if (arrival_time) results.write_attribute("arrival_time", *arrival_time);
   //    The structure events (the slider entering carrier elements, the lock at B): their times,
   //    and each description as an attribute event_<k>.
   const auto& events = integrator.events();
@@ -176,10 +178,12 @@ int main(int argc, char** argv) try {
 
   // 5. Report.
   const Eigen::Vector3d mass_final = model.state().position[mass];
-  std::printf("sliding_beam, %d + %d elements of degree %d, h = %g s, %s: the slider reached B at t = %.4f s "
+  const std::string arrival = arrival_time ? "reached B at t = " + std::to_string(*arrival_time) + " s"
+                                           : "had not reached B at t = " + std::to_string(integrator.time()) + " s";
+  std::printf("sliding_beam, %d + %d elements of degree %d, h = %g s, %s: the slider %s "
               "(003: 1.306 s); %ld steps, %ld Newton iterations, %ld factorizations, %ld pattern builds, "
               "%.2f s; mass at (%.4f, %.4f, %.4f) m; max constraint residual %.2e\n",
-              elements, sliding_elements, degree, h, strategy.c_str(), arrival_time, counters.steps,
+              elements, sliding_elements, degree, h, strategy.c_str(), arrival.c_str(), counters.steps,
               counters.newton_iterations, counters.factorizations, counters.pattern_builds,
               counters.wall_seconds, mass_final.x(), mass_final.y(), mass_final.z(), max_residual);
   examples::JsonSummary()

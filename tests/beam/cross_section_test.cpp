@@ -20,22 +20,35 @@ TEST_CASE("rectangle, circle and tube properties", "[gebt][section]") {
 
   const core::CrossSection tube = core::CrossSection::tube(0.060, 0.055, 0.3);
   CHECK(tube.area == Approx(pi * (0.03 * 0.03 - 0.0275 * 0.0275)).epsilon(1e-14));
-  CHECK(tube.torsion_constant == Approx(tube.polar_moment()).epsilon(1e-15));
+  // A thin-walled-or-not circular tube's torsion constant is its polar moment π(D⁴ − d⁴)/32.
+  CHECK(tube.torsion_constant == Approx(pi * (std::pow(0.060, 4) - std::pow(0.055, 4)) / 32).epsilon(1e-14));
   const core::CrossSection circle = core::CrossSection::circle(0.02, 0.3);
   CHECK(circle.second_moment_2 == Approx(pi * std::pow(0.01, 4) / 4).epsilon(1e-14));
   CHECK(circle.shear_coefficient_2 == Approx(6 * 1.3 / (7 + 1.8)).epsilon(1e-15));
 }
 
 TEST_CASE("section stiffness matrix follows 003 eq. 15", "[gebt][section]") {
+  // Each entry is one or two products of doubles given here in closed form: 1e-15 relative is a
+  // few roundings (an entry in the wrong place is off by O(1)).
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   core::CrossSection section = core::CrossSection::rectangle(0.03, 0.02, 0.3);
   section.product_moment = 1e-9;
   const Eigen::Matrix<double, 6, 6> C = core::SectionStiffness::from(steel, section).matrix();
-  CHECK(C(0, 0) == Approx(2.1e11 * 6e-4));
-  CHECK(C(4, 4) == Approx(2.1e11 * 0.03 * std::pow(0.02, 3) / 12));  // about axis 2: ∫ξ₃²
-  CHECK(C(5, 5) == Approx(2.1e11 * 0.02 * std::pow(0.03, 3) / 12));  // about axis 3: ∫ξ₂²
-  CHECK(C(4, 5) == Approx(-2.1e11 * 1e-9));
-  CHECK(C(3, 3) == Approx(steel.shear_modulus() * section.torsion_constant));
+  const double G = 2.1e11 / (2 * 1.3), kappa = 10 * 1.3 / (12 + 3.3);  // Cowper's rectangle
+  CHECK(C(0, 0) == Approx(2.1e11 * 6e-4).epsilon(1e-15));
+  CHECK(C(1, 1) == Approx(kappa * G * 6e-4).epsilon(1e-15));
+  CHECK(C(2, 2) == Approx(kappa * G * 6e-4).epsilon(1e-15));
+  CHECK(C(4, 4) == Approx(2.1e11 * 0.03 * std::pow(0.02, 3) / 12).epsilon(1e-15));  // about axis 2: ∫ξ₃²
+  CHECK(C(5, 5) == Approx(2.1e11 * 0.02 * std::pow(0.03, 3) / 12).epsilon(1e-15));  // about axis 3: ∫ξ₂²
+  CHECK(C(4, 5) == Approx(-2.1e11 * 1e-9).epsilon(1e-15));
+  CHECK(C(5, 4) == C(4, 5));
+  const Eigen::Matrix<double, 6, 6> off_diagonal = C - Eigen::Matrix<double, 6, 6>(C.diagonal().asDiagonal());
+  CHECK(off_diagonal.cwiseAbs().sum() == Approx(2 * 2.1e11 * 1e-9).epsilon(1e-15));  // nothing but C₂₃
+  // Torsion G J against Timoshenko & Goodier's tabulated J = 0.140577 a⁴ of a square (6 digits:
+  // ±5e-7 / 0.14 = 4e-6 relative).
+  const core::CrossSection square = core::CrossSection::rectangle(0.03, 0.03, 0.3);
+  const Eigen::Matrix<double, 6, 6> Cs = core::SectionStiffness::from(steel, square).matrix();
+  CHECK(Cs(3, 3) == Approx(G * 0.140577 * std::pow(0.03, 4)).epsilon(4e-6));
 }
 
 TEST_CASE("invalid sections and materials raise spar::Error", "[gebt][section][errors]") {

@@ -71,7 +71,7 @@ void build_bead_on_rail(SlidingRun& run, double zeta0, std::optional<double> upp
 }  // namespace
 
 TEST_CASE("sliding joint: consistent start-up of the massless zeta (bead on a rail)",
-          "[dynamics][sliding]") {
+          "[dynamics][sliding][validation]") {
   SlidingRun run;
   build_bead_on_rail(run, 0.3, std::nullopt, 1e-2);
   run.integrator->initialize();
@@ -113,7 +113,7 @@ TEST_CASE("sliding joint: a bead on a rigid rail follows the analytic motion acr
 }
 
 TEST_CASE("sliding joint: the end stop locks the bead at the rail's end as an event",
-          "[dynamics][sliding]") {
+          "[dynamics][sliding][validation]") {
   SlidingRun run;
   const double zeta0 = 0.3, h = 1e-2;
   build_bead_on_rail(run, zeta0, rail_length, h);

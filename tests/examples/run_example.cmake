@@ -1,10 +1,26 @@
 # Script mode: run EXAMPLE with ARGS and --out OUT, then CHECKER on OUT/FILE. Either failing fails
-# the test, with both outputs shown.
+# the test, with both outputs shown. The example's last stdout line must be a JSON object (CMake's
+# own parser) and, when PYTHON is given, every XDMF sidecar in OUT must parse as XML with Python's
+# xml.etree: parsers independent of spar's writers and of the tests' own XML reader.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${EXAMPLE} ${ARGS} --out ${OUT} RESULT_VARIABLE status OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "the example failed (${status}):\n${out}\n${err}")
+endif()
+string(STRIP "${out}" stripped)
+string(REGEX REPLACE "^.*\n" "" last_line "${stripped}")
+string(JSON type ERROR_VARIABLE json_error TYPE "${last_line}")
+if(json_error OR NOT type STREQUAL "OBJECT")
+  message(FATAL_ERROR "the example's last stdout line is not a JSON object (${json_error}):\n${last_line}")
+endif()
+file(GLOB sidecars ${OUT}/*.xmf ${OUT}/*.xdmf)
+if(PYTHON AND sidecars)
+  execute_process(COMMAND ${PYTHON} -c "import sys, xml.etree.ElementTree as E; [E.parse(p) for p in sys.argv[1:]]"
+                          ${sidecars} RESULT_VARIABLE status ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "an XDMF sidecar is not well-formed XML:\n${err}")
+  endif()
 endif()
 execute_process(COMMAND ${CHECKER} ${OUT}/${FILE} RESULT_VARIABLE status OUTPUT_VARIABLE out)
 message(STATUS "${out}")

@@ -3,6 +3,7 @@
 #include <spar/error.hpp>
 #include <spar/joints/clamp_joint.hpp>
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <catch2/catch.hpp>
 
@@ -46,12 +47,15 @@ TEST_CASE("clamp joint allows rigid motions of the pair and locks relative rotat
     const core::Configuration rigid = test::rotate_node_about(
         test::rotate_node_about(q0, 0, center, rotation), 1, center, rotation);
     CHECK(test::value(joint, rigid, 0).norm() <= 1e-14);
-    // Turning node 1 alone about the clamp point by 0.1 rad about any axis: the rotation rows see
-    // it to first order, |Φ₄…₆| = 0.1 + O(0.1²).
-    const Eigen::VectorXd phi =
-        test::value(joint, test::rotate_node_about(q0, 1, point, 0.1 * random.axis()), 0);
+    // Turning node 1 alone about the clamp point by Q = exp(0.1 a): the rotation rows are
+    // (e₂·Q e₃, e₃·Q e₁, e₁·Q e₂) = (Q₂₃, Q₃₁, Q₁₂) (docs/joints.md J16, both frames carrying the
+    // inertial basis at q0), Q from Eigen's angle-axis. Entries of rotations built from the same
+    // angle by two routes: 1e-15 is a few roundings.
+    const Eigen::Vector3d axis = random.axis();
+    const Eigen::VectorXd phi = test::value(joint, test::rotate_node_about(q0, 1, point, 0.1 * axis), 0);
+    const Eigen::Matrix3d Q = Eigen::AngleAxisd(0.1, axis).toRotationMatrix();
     CHECK(phi.head<3>().norm() <= 1e-14);
-    CHECK(phi.tail<3>().norm() == Approx(0.1).epsilon(0.1));
+    CHECK((phi.tail<3>() - Eigen::Vector3d(Q(1, 2), Q(2, 0), Q(0, 1))).norm() <= 1e-15);
   }
   // The Jacobian of the rotation rows at q0 is regular: a clamp has no free relative rotation.
   const Eigen::MatrixXd B = test::jacobian(joint, q0, 0);

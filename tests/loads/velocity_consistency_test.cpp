@@ -63,7 +63,7 @@ TEST_CASE("velocity consistency: the check rejects a rotation increment aliased 
 }
 
 TEST_CASE("velocity consistency: the flagship slider-crank run stores the rate of its motion",
-          "[loads][dynamics][validation]") {
+          "[loads][dynamics]") {
   // 003 §5.1 with the example's settings: h = 5e-4, ρ∞ = 0.9, frozen strategy, Newton tolerance
   // 1e-6, over 0.02 s (40 steps), every step recorded. What the run shows (measured): the
   // configuration of Rod I's root turns by 0.002–0.009 rad per step, but its stored angular

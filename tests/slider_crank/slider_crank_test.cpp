@@ -1,6 +1,7 @@
 // The flexible slider-crank of 003 §5.1 (examples/slider_crank): the constraints hold to 1e-10
-// after every step, the iteration-matrix strategies converge to the same motion with a tight
-// Newton tolerance, and the motion has the paper's character. Short runs keep the suite fast.
+// after every step and the iteration-matrix strategies converge to the same motion with a tight
+// Newton tolerance. Short runs keep the suite fast; the comparison with the paper's figures and
+// counts is the example's (examples/slider_crank/README.md), not asserted here.
 #include <spar/solvers/generalized_alpha.hpp>
 
 #include <catch2/catch.hpp>
@@ -47,7 +48,7 @@ double max_distance(const Run& a, const Run& b) {
 
 }  // namespace
 
-TEST_CASE("slider-crank: constraints hold to 1e-10 after every step", "[dynamics][validation]") {
+TEST_CASE("slider-crank: constraints hold to 1e-10 after every step", "[dynamics][slider_crank]") {
   const Run run = simulate(solvers::IterationMatrix::update, 1e-4, 0.02, 1e-6);
   INFO("max constraint residual " << run.max_constraint_residual);
   CHECK(run.max_constraint_residual <= 1e-10);
@@ -55,9 +56,11 @@ TEST_CASE("slider-crank: constraints hold to 1e-10 after every step", "[dynamics
 }
 
 TEST_CASE("slider-crank: frozen, modified and update strategies agree with a tight tolerance",
-          "[dynamics][validation]") {
-  // With ‖[Δq, h²βΔλ]‖² ≤ 1e-22 every strategy solves the same discrete equations to ~1e-11 m,
-  // so Rod II's midpoint trajectories agree to far better than the required 1e-8 m.
+          "[dynamics][slider_crank]") {
+  // With ‖[Δq, h²βΔλ]‖² ≤ 1e-22 every step stops after an increment ≤ 1e-11 m, which bounds its
+  // remaining Newton error (contraction rates < ½), so every strategy solves the same discrete
+  // equations to 1e-11 m per step. 1e-10 m is that per-step bound with a margin of 10 for its
+  // propagation over the 200 steps; measured 4.7e-16 m (frozen) and 4.0e-12 m (modified).
   const double h = 1e-4, t_end = 0.02, tolerance = 1e-22;
   const Run update = simulate(solvers::IterationMatrix::update, h, t_end, tolerance);
   const Run frozen = simulate(solvers::IterationMatrix::frozen, h, t_end, tolerance);
@@ -66,8 +69,8 @@ TEST_CASE("slider-crank: frozen, modified and update strategies agree with a tig
   REQUIRE(update.midpoints.size() == modified.midpoints.size());
   INFO("frozen vs update " << max_distance(frozen, update) << " m, modified vs update "
                            << max_distance(modified, update) << " m");
-  CHECK(max_distance(frozen, update) <= 1e-8);
-  CHECK(max_distance(modified, update) <= 1e-8);
+  CHECK(max_distance(frozen, update) <= 1e-10);
+  CHECK(max_distance(modified, update) <= 1e-10);
   CHECK(frozen.counters.jtheta_evaluations == 0);
   CHECK(modified.counters.factorizations < update.counters.factorizations);
 }

@@ -88,7 +88,7 @@ TEST_CASE("truss deployment: the cosine law deploys the unit, each driver hands 
 }
 
 TEST_CASE("truss deployment under gravity (003 case 1): the bays unfold and lock, the mirror sides together",
-          "[truss][dynamics]") {
+          "[truss][dynamics][validation]") {
   Run run;
   build(run, "", 0.0, 0.1);
   double largest_residual = 0.0, dissipation_before_lock = 0.0, work_before_lock = 0.0;

@@ -1,0 +1,55 @@
+// Error paths of the model's building blocks: each refusal names the problem and leaves the
+// model as it was.
+#include <spar/core/model.hpp>
+#include <spar/error.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <memory>
+
+#include "beam_fixtures.hpp"
+#include "point_mass.hpp"
+
+using namespace spar;
+
+TEST_CASE("replace_element refuses a missing index and a null element, leaving the model as it was",
+          "[model][errors]") {
+  core::Model model;
+  const int block = model.add_vector(Eigen::Vector3d(0.1, 0.2, 0.3));
+  model.add_element(std::make_unique<test::PointMass>(block, 1.0));
+  const long version = model.structure_version();
+  CHECK_THROWS_WITH(model.replace_element(1, std::make_unique<test::PointMass>(block, 2.0)),
+                    Catch::Contains("element 1 does not exist"));
+  CHECK_THROWS_WITH(model.replace_element(-1, std::make_unique<test::PointMass>(block, 2.0)),
+                    Catch::Contains("does not exist"));
+  CHECK_THROWS_WITH(model.replace_element(0, nullptr), Catch::Contains("null element"));
+  CHECK_THROWS_WITH(model.replace_element(0, std::make_unique<test::PointMass>(block + 1, 2.0)),
+                    Catch::Contains("block 1 does not exist"));
+  CHECK(model.element_count() == 1);
+  CHECK(model.structure_version() == version);
+}
+
+TEST_CASE("a configuration refuses an increment of the wrong size", "[model][errors]") {
+  core::Configuration q;
+  q.add_frame(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+  const core::Configuration start = q;
+  CHECK_THROWS_WITH(q.apply_increment(Eigen::VectorXd::Zero(5)), Catch::Contains("increment has 5 entries for 6"));
+  CHECK_THROWS_WITH(q.assign_increment(start, Eigen::VectorXd::Zero(7)), Catch::Contains("increment has 7 entries"));
+  CHECK(q.position[0] == start.position[0]);
+  CHECK(q.rotation[0] == start.rotation[0]);
+}
+
+TEST_CASE("a beam refuses a section axis along its centerline and a wrong number of reference rotations",
+          "[model][errors]") {
+  core::Model model;
+  CHECK_THROWS_WITH(model.add_beam({.centerline = test::straight_centerline(1.0, 2, 2),
+                                    .stiffness = test::generic_stiffness(),
+                                    .section_axis_hint = Eigen::Vector3d(2.0, 0.0, 0.0)}),
+                    Catch::Contains("parallel to the centerline"));
+  CHECK_THROWS_WITH(model.add_beam({.centerline = test::straight_centerline(1.0, 2, 2),
+                                    .stiffness = test::generic_stiffness(),
+                                    .reference_rotations = {Eigen::Matrix3d::Identity()}}),
+                    Catch::Contains("got 1 reference rotations for 4 control points"));
+  CHECK(model.beam_count() == 0);
+  CHECK(model.block_count() == 0);
+}
