@@ -42,4 +42,11 @@ private:
   std::string fix_;
 };
 
+/// Bad input met in the middle of a computation (a load history that is NaN at some time): the
+/// solvers pass it on at once instead of retrying with a shorter step, which cannot help.
+class InputError : public Error {
+public:
+  using Error::Error;
+};
+
 }  // namespace spar

@@ -549,6 +549,8 @@ struct GeneralizedAlpha::Implementation {
   void guarded_evaluate(double time, const MatrixCoefficients* c, double residual_scale) {
     try {
       evaluate(time, c, residual_scale);
+    } catch (const InputError&) {
+      throw;  // bad input: a shorter step would meet it again (the user step is restored)
     } catch (const Error& error) {
       last_failure = error.what();
       throw EvaluationFailure{};

@@ -24,7 +24,7 @@ double load_scale(const ElementInput& in, const std::function<double(double)>& h
   if (!in.dynamic() || !history) return in.load_factor;
   const double factor = history(in.time);
   if (!std::isfinite(factor))
-    throw Error("the load history gives " + significant(factor) + " at t = " + significant(in.time),
+    throw InputError("the load history gives " + significant(factor) + " at t = " + significant(in.time),
                 "core::Model::add_load (LoadHistory)", "give a history that is finite at every time of the run");
   return in.load_factor * factor;
 }
