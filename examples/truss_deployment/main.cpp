@@ -133,18 +133,24 @@ int main(int argc, char** argv) try {
   std::ofstream snapshots(out + "/truss_snapshots.csv");  // the folded, half-deployed, deployed and final shapes
   snapshots.precision(9);
   snapshots << "t,member,kind,x,y,z\n";
-  std::vector<double> snapshot_times = {0.0, driven ? 0.5 * t_f : 0.0, driven ? t_f : 0.0, t_end};
+  const std::vector<double> snapshot_times =
+      driven ? std::vector<double>{0.0, 0.5 * t_f, t_f, t_end} : std::vector<double>{0.0, t_end};
   double max_residual = 0.0, next_output = 0.0;
   const auto record = [&](bool last) {
     const solvers::Energies energy = integrator.energies();
     const double residual = integrator.constraint_residual(), t = integrator.time();
     max_residual = std::max(max_residual, residual);
     const Eigen::Vector3d d = q.position[unit.d_node];
+    std::array<double, 4> zetas{}, betas{};
+    for (std::size_t k = 0; k < unit.sliders.size(); ++k) {
+      zetas[k] = zeta(unit.sliders[k]);
+      betas[k] = measured_angle(unit.sliders[k]);
+    }
     std::vector<double> row = {residual, static_cast<double>(integrator.last_step_iterations())};
     csv << t << ',' << d.x() << ',' << d.y() << ',' << d.z();
-    for (const auto& s : unit.sliders) csv << ',' << zeta(s);
-    for (const auto& s : unit.sliders) csv << ',' << measured_angle(s);
-    for (const auto& s : unit.sliders) row.insert(row.end(), {zeta(s), measured_angle(s)});
+    for (const double z : zetas) csv << ',' << z;
+    for (const double b : betas) csv << ',' << b;
+    for (std::size_t k = 0; k < zetas.size(); ++k) row.insert(row.end(), {zetas[k], betas[k]});
     csv << ',' << energy.kinetic << ',' << energy.strain;
     examples::write_energy_balance_csv(csv, energy);
     csv << ',' << residual << ',' << integrator.last_step_iterations() << '\n';
@@ -163,20 +169,19 @@ int main(int argc, char** argv) try {
     results.append({.time = t, .configuration = &q,
                     .scalars = examples::followed_by(row, examples::energy_balance_values(energy)),
                     .probes = {d}, .centerlines = std::move(lines)});
-    next_output += output_interval;
+    while (next_output <= t + 0.5 * h) next_output += output_interval;  // the next time not yet recorded
   };
   record(false);
   core::ProgressBar progress(t_end, "truss_deployment");
-  std::array<std::optional<double>, 4> lock_times;
-  std::vector<std::pair<double, double>> d_z_after;  // (t, D_z) over t_f … t_end, case 2
+  const auto all_locked = [&] {
+    return std::all_of(unit.sliders.begin(), unit.sliders.end(), [](const auto& s) { return s.joint->locked(); });
+  };
+  std::vector<double> d_z_after;  // D_z over t_f … t_end, case 2
   while (integrator.time() < t_end - 0.5 * h) {
     integrator.step();
-    for (std::size_t k = 0; k < unit.sliders.size(); ++k)
-      if (!lock_times[k] && unit.sliders[k].joint->locked()) lock_times[k] = unit.sliders[k].joint->lock_time();
-    const bool all_locked = std::all_of(lock_times.begin(), lock_times.end(), [](auto t) { return t.has_value(); });
-    const bool done = !driven && all_locked;
+    const bool done = !driven && all_locked();
     record(done || integrator.time() >= t_end - 0.5 * h);
-    if (driven && integrator.time() >= t_f - 0.5 * h) d_z_after.emplace_back(integrator.time(), q.position[unit.d_node].z());
+    if (driven && integrator.time() >= t_f - 0.5 * h) d_z_after.push_back(q.position[unit.d_node].z());
     progress.update(integrator.time(), integrator.counters().steps);
     if (done) break;
   }
@@ -186,15 +191,17 @@ int main(int argc, char** argv) try {
   // 5. The summary: when the sliders locked, where D ended, and (case 2) D's residual vibration
   //    after the deployment: its Z deviation from its mean over t_f … t_end, RMS and peak.
   std::optional<double> lock_time;
-  if (std::all_of(lock_times.begin(), lock_times.end(), [](auto t) { return t.has_value(); }))
-    lock_time = **std::max_element(lock_times.begin(), lock_times.end());
+  if (all_locked())
+    lock_time = std::max_element(unit.sliders.begin(), unit.sliders.end(), [](const auto& a, const auto& b) {
+                  return a.joint->lock_time() < b.joint->lock_time();
+                })->joint->lock_time();
   std::optional<double> rms_z, peak_z;
   if (d_z_after.size() > 1) {
     double mean = 0.0;
-    for (const auto& [t, z] : d_z_after) mean += z;
+    for (const double z : d_z_after) mean += z;
     mean /= static_cast<double>(d_z_after.size());
     double sum = 0.0, peak = 0.0;
-    for (const auto& [t, z] : d_z_after) {
+    for (const double z : d_z_after) {
       sum += (z - mean) * (z - mean);
       peak = std::max(peak, std::abs(z - mean));
     }
@@ -211,7 +218,8 @@ int main(int argc, char** argv) try {
   const Eigen::Vector3d d = q.position[unit.d_node];
   std::printf("truss_deployment case %d (%s), %d elements per member, h = %g s, %s: sliders locked at",
               load_case, driven ? law.c_str() : "gravity 0.005 g", parameters.elements, h, strategy.c_str());
-  for (const auto& t : lock_times) t ? std::printf(" %.3f", *t) : std::printf(" (never)");
+  for (const auto& s : unit.sliders)
+    s.joint->locked() ? std::printf(" %.3f", s.joint->lock_time()) : std::printf(" (never)");
   std::printf(" s; D at (%.4f, %.4f, %.4f) m at t = %.3f s", d.x(), d.y(), d.z(), integrator.time());
   if (rms_z) std::printf("; D_z after t_f: RMS %.3e m, peak %.3e m", *rms_z, *peak_z);
   std::printf("; %ld steps, %ld Newton iterations, %ld factorizations, %.2f s; max constraint residual %.2e\n",
