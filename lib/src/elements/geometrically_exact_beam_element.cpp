@@ -16,10 +16,10 @@ std::vector<double> beam_shape_integrals(const GeometricallyExactBeam& beam, int
 
 GeometricallyExactBeamElement::GeometricallyExactBeamElement(const GeometricallyExactBeam& beam,
                                                              int beam_index, int e)
-    : beam_(&beam), beam_index_(beam_index), element_(e), shape_integrals_(beam_shape_integrals(beam, e)) {
+    : beam_(&beam), beam_index_(beam_index), element_(e), shape_integrals_(beam_shape_integrals(beam, e)),
+      inertia_(beam_element_inertia(beam, e)) {
   const int first = beam.node(beam.element(e).first_control_point);
   for (int I = 0; I <= beam.degree(); ++I) blocks_.push_back(first + I);
-  beam_element_mass(beam, e, mass_);
 }
 
 std::string GeometricallyExactBeamElement::name() const {
@@ -59,13 +59,10 @@ void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const Eleme
   ElementVector v(n), a(n);
   gather(q, blocks_, *in.velocity, v);
   gather(q, blocks_, *in.acceleration, a);
-  if (request.residual) {
-    out.residual.noalias() += mass_ * a;
-    add_gyroscopic_force(mass_, v, out.residual);
-  }
-  if (request.mass) out.mass += mass_;
-  if (request.damping) add_gyroscopic_tangent(mass_, v, out.damping);
-  if (request.energy) out.energy.kinetic = 0.5 * v.dot(mass_ * v);
+  if (request.residual) inertia_.add_force(v, a, out.residual);
+  if (request.mass) inertia_.add_mass(out.mass);
+  if (request.damping) inertia_.add_gyroscopic_tangent(v, out.damping);
+  if (request.energy) out.energy.kinetic = inertia_.kinetic_energy(v);
 }
 
 }  // namespace spar::core

@@ -190,6 +190,10 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
 
     const Matrix6x12 B = strain_operator(kin, f);
     const Vector12 g_z = gp.weight * (B.transpose() * stress);
+    // C B once, then Bᵀ (C B) as a coefficient-wise product: Eigen would hand a 12 × 6 × 12
+    // product to its blocked GEMM, whose packing costs more than the product at this size.
+    Matrix6x12 CB;
+    if (with_stiffness) CB.noalias() = C * B;
     linear_maps(gp, k, maps);
     for (int j = 0; j < 2 * k; ++j)
       for (int t = 0; t < maps[j].count; ++t)
@@ -199,7 +203,8 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
       // Only the x′ rows of H_z reach a translation row or column of K (B9 with the rotation
       // rows left out): H_z(x′, ·) = w (B_x′ᵀ C B + G(x′, ·)), G(x′, ·) from B6.
       const Eigen::Matrix<double, 6, 3> B_x = B.leftCols<3>();
-      Eigen::Matrix<double, 3, 12> H_x = gp.weight * (B_x.transpose() * C * B);
+      Eigen::Matrix<double, 3, 12> H_x;
+      H_x.noalias() = gp.weight * B_x.transpose().lazyProduct(CB);
       H_x.middleCols<3>(3 * z_a) -=
           gp.weight * rel.reference * lie::hat(Vector3(kin.exp_tangent.rotation * stress.head<3>()));
       H_x.middleCols<3>(3 * z_theta) -=
@@ -212,9 +217,9 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
       continue;
     }
 
-    const Matrix12 H_z = gp.weight * (B.transpose() * C * B +
-                                      geometric_stiffness(kin, f, rel, stress.head<3>(),
-                                                          stress.tail<3>()));
+    Matrix12 H_z = geometric_stiffness(kin, f, rel, stress.head<3>(), stress.tail<3>());
+    H_z.noalias() += B.transpose().lazyProduct(CB);
+    H_z *= gp.weight;
     for (int j = 0; j < 2 * k; ++j) {
       Eigen::Matrix<double, 3, 12> row = Eigen::Matrix<double, 3, 12>::Zero();
       for (int t = 0; t < maps[j].count; ++t)
@@ -253,8 +258,8 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
   for (int I = 0; I < k; ++I) {
     HJ.middleCols<3>(6 * I) = H_y.middleCols<3>(3 * I);
     if (I == 0) continue;
-    HJ.middleCols<3>(3).noalias() += H_y.middleCols<3>(3 * (k + I)) * d_psi_d_first[I];
-    HJ.middleCols<3>(6 * I + 3).noalias() = H_y.middleCols<3>(3 * (k + I)) * d_psi_d_own[I];
+    HJ.middleCols<3>(3).noalias() += H_y.middleCols<3>(3 * (k + I)).lazyProduct(d_psi_d_first[I]);
+    HJ.middleCols<3>(6 * I + 3).noalias() = H_y.middleCols<3>(3 * (k + I)).lazyProduct(d_psi_d_own[I]);
   }
   ElementMatrix& K = result.stiffness;
   K.resize(n, n);
@@ -262,8 +267,8 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
   for (int I = 0; I < k; ++I) {
     K.middleRows<3>(6 * I) = HJ.middleRows<3>(3 * I);
     if (I == 0) continue;
-    K.middleRows<3>(3).noalias() += d_psi_d_first[I].transpose() * HJ.middleRows<3>(3 * (k + I));
-    K.middleRows<3>(6 * I + 3).noalias() = d_psi_d_own[I].transpose() * HJ.middleRows<3>(3 * (k + I));
+    K.middleRows<3>(3).noalias() += d_psi_d_first[I].transpose().lazyProduct(HJ.middleRows<3>(3 * (k + I)));
+    K.middleRows<3>(6 * I + 3).noalias() = d_psi_d_own[I].transpose().lazyProduct(HJ.middleRows<3>(3 * (k + I)));
   }
   // Second-order terms of ψ_I(Δφ_0, Δφ_I) contracted with λ = ∂Π/∂ψ_I (B10): rotation–rotation
   // blocks only.

@@ -5,78 +5,82 @@
 
 namespace spar::core {
 
-namespace {
+FrameInertia::FrameInertia(const Coefficients& coefficients, double translational,
+                           const Eigen::Matrix3d& rotational)
+    : coefficients_(coefficients), translational_(translational), rotational_(rotational) {}
 
-/// Both parts of InertiaContribution from its mass matrix.
-void add_gyroscopic(const Eigen::Ref<const Eigen::VectorXd>& velocity, InertiaContribution& c) {
-  c.gyroscopic.setZero(c.mass.rows());
-  c.gyroscopic_tangent.setZero(c.mass.rows(), c.mass.cols());
-  add_gyroscopic_force(c.mass, velocity, c.gyroscopic);
-  add_gyroscopic_tangent(c.mass, velocity, c.gyroscopic_tangent);
+Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::ColMajor, 3, max_beam_element_nodes>
+FrameInertia::weighted_angular_velocities(const Eigen::Ref<const Eigen::VectorXd>& velocity) const {
+  const int k = frame_count();
+  Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::ColMajor, 3, max_beam_element_nodes> sums =
+      Eigen::Matrix3Xd::Zero(3, k);
+  for (int I = 0; I < k; ++I)
+    for (int J = 0; J < k; ++J) sums.col(I) += coefficients_(I, J) * velocity.segment<3>(6 * J + 3);
+  return sums;
 }
 
-/// Π_I = Σ_J M_IJ^ΩΩ Ω_J, the angular momentum carried by frame I.
-Eigen::Vector3d angular_momentum(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                                 int I) {
-  Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
-  for (int J = 0; J < mass.rows() / frame_dofs; ++J)
-    momentum += mass.block<3, 3>(6 * I + 3, 6 * J + 3) * velocity.segment<3>(6 * J + 3);
-  return momentum;
-}
-
-}  // namespace
-
-// docs/dynamics.md eq. D2.
-void add_gyroscopic_force(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                          Eigen::Ref<Eigen::VectorXd> force) {
-  for (int I = 0; I < mass.rows() / frame_dofs; ++I)
-    force.segment<3>(6 * I + 3) +=
-        Eigen::Vector3d(velocity.segment<3>(6 * I + 3)).cross(angular_momentum(mass, velocity, I));
-}
-
-// docs/dynamics.md eq. D2.
-void add_gyroscopic_tangent(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                            Eigen::Ref<Eigen::MatrixXd> tangent) {
-  const int k = static_cast<int>(mass.rows() / frame_dofs);
+// 003 eq. 32: (M v̇)_I = Σ_J m_IJ (ρA ẍ_J, ρJ Ω̇_J); docs/dynamics.md eq. D2 for f_gyr.
+void FrameInertia::add_force(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                             const Eigen::Ref<const Eigen::VectorXd>& acceleration,
+                             Eigen::Ref<Eigen::VectorXd> force) const {
+  const int k = frame_count();
+  const auto omega_sums = weighted_angular_velocities(velocity);
   for (int I = 0; I < k; ++I) {
-    const Eigen::Matrix3d hat_omega = lie::hat(Eigen::Vector3d(velocity.segment<3>(6 * I + 3)));
-    for (int K = 0; K < k; ++K)
-      tangent.block<3, 3>(6 * I + 3, 6 * K + 3) += hat_omega * mass.block<3, 3>(6 * I + 3, 6 * K + 3);
-    tangent.block<3, 3>(6 * I + 3, 6 * I + 3) -= lie::hat(angular_momentum(mass, velocity, I));
+    Eigen::Vector3d linear = Eigen::Vector3d::Zero(), angular = Eigen::Vector3d::Zero();
+    for (int J = 0; J < k; ++J) {
+      linear += coefficients_(I, J) * acceleration.segment<3>(6 * J);
+      angular += coefficients_(I, J) * acceleration.segment<3>(6 * J + 3);
+    }
+    const Eigen::Vector3d momentum = rotational_ * omega_sums.col(I);  // Π_I
+    force.segment<3>(6 * I) += translational_ * linear;
+    force.segment<3>(6 * I + 3) +=
+        rotational_ * angular + Eigen::Vector3d(velocity.segment<3>(6 * I + 3)).cross(momentum);
   }
 }
 
-// M_IJ = m_IJ diag(ρA I, ρJ)  (003 eq. 32 with interpolated nodal velocities).
-void beam_element_mass(const GeometricallyExactBeam& beam, int e, ElementMatrix& mass) {
-  const BeamElement& element = beam.element(e);
-  const int k = beam.degree() + 1;
-  mass.setZero(frame_dofs * k, frame_dofs * k);
-  const SectionInertia& inertia = beam.inertia();
+void FrameInertia::add_mass(Eigen::Ref<Eigen::MatrixXd> mass) const {
+  const int k = frame_count();
   for (int I = 0; I < k; ++I)
     for (int J = 0; J < k; ++J) {
-      const double m = element.mass_coefficients(I, J);
-      mass.block<3, 3>(6 * I, 6 * J).diagonal().setConstant(m * inertia.mass_per_length);
-      mass.block<3, 3>(6 * I + 3, 6 * J + 3) = m * inertia.rotary;
+      const double m = coefficients_(I, J);
+      mass.block<3, 3>(6 * I, 6 * J).diagonal().array() += m * translational_;
+      mass.block<3, 3>(6 * I + 3, 6 * J + 3) += m * rotational_;
     }
 }
 
-void beam_element_inertia(const GeometricallyExactBeam& beam, int e,
-                          const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                          InertiaContribution& out) {
-  beam_element_mass(beam, e, out.mass);
-  add_gyroscopic(velocity, out);
+// docs/dynamics.md eq. D2.
+void FrameInertia::add_gyroscopic_tangent(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                                          Eigen::Ref<Eigen::MatrixXd> tangent) const {
+  const int k = frame_count();
+  const auto omega_sums = weighted_angular_velocities(velocity);
+  for (int I = 0; I < k; ++I) {
+    const Eigen::Matrix3d hat_omega_J = lie::hat(Eigen::Vector3d(velocity.segment<3>(6 * I + 3))) * rotational_;
+    for (int K = 0; K < k; ++K) tangent.block<3, 3>(6 * I + 3, 6 * K + 3) += coefficients_(I, K) * hat_omega_J;
+    tangent.block<3, 3>(6 * I + 3, 6 * I + 3) -= lie::hat(Eigen::Vector3d(rotational_ * omega_sums.col(I)));
+  }
 }
 
-void rigid_body_inertia(const RigidBody& body, const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                        InertiaContribution& out) {
-  out.mass.setZero(frame_dofs, frame_dofs);
-  out.mass.topLeftCorner<3, 3>().diagonal().setConstant(body.mass);
-  out.mass.bottomRightCorner<3, 3>() = body.inertia;
-  add_gyroscopic(velocity, out);
+double FrameInertia::kinetic_energy(const Eigen::Ref<const Eigen::VectorXd>& velocity) const {
+  const int k = frame_count();
+  const auto omega_sums = weighted_angular_velocities(velocity);
+  double twice = 0.0;
+  for (int I = 0; I < k; ++I) {
+    Eigen::Vector3d linear = Eigen::Vector3d::Zero();
+    for (int J = 0; J < k; ++J) linear += coefficients_(I, J) * velocity.segment<3>(6 * J);
+    twice += translational_ * velocity.segment<3>(6 * I).dot(linear) +
+             velocity.segment<3>(6 * I + 3).dot(rotational_ * omega_sums.col(I));
+  }
+  return 0.5 * twice;
 }
 
-double kinetic_energy(const InertiaContribution& c, const Eigen::Ref<const Eigen::VectorXd>& velocity) {
-  return 0.5 * velocity.dot(c.mass * velocity);
+// 003 eq. 32 with interpolated nodal velocities: m_IJ = ∫ N_I N_J dS.
+FrameInertia beam_element_inertia(const GeometricallyExactBeam& beam, int e) {
+  const SectionInertia& inertia = beam.inertia();
+  return FrameInertia(beam.element(e).mass_coefficients, inertia.mass_per_length, inertia.rotary);
+}
+
+FrameInertia rigid_body_inertia(const RigidBody& body) {
+  return FrameInertia(FrameInertia::Coefficients::Ones(1, 1), body.mass, body.inertia);
 }
 
 }  // namespace spar::core

@@ -17,12 +17,11 @@ void RigidBodyElement::evaluate(const ElementInput& in, const ElementRequest& re
   const Eigen::Index offset = q.blocks[body_.node].offset;
   const Eigen::Matrix<double, frame_dofs, 1> v = in.velocity->segment<frame_dofs>(offset);
   const Eigen::Matrix<double, frame_dofs, 1> a = in.acceleration->segment<frame_dofs>(offset);
-  InertiaContribution inertia;
-  rigid_body_inertia(body_, v, inertia);
-  if (request.residual) out.residual += inertia.mass * a + inertia.gyroscopic;
-  if (request.mass) out.mass += inertia.mass;
-  if (request.damping) out.damping += inertia.gyroscopic_tangent;
-  if (request.energy) out.energy.kinetic = kinetic_energy(inertia, v);
+  const FrameInertia inertia = rigid_body_inertia(body_);
+  if (request.residual) inertia.add_force(v, a, out.residual);
+  if (request.mass) inertia.add_mass(out.mass);
+  if (request.damping) inertia.add_gyroscopic_tangent(v, out.damping);
+  if (request.energy) out.energy.kinetic = inertia.kinetic_energy(v);
 }
 
 }  // namespace spar::core

@@ -27,34 +27,48 @@ struct RigidBody {
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
 };
 
-/// Inertia of k frames with local velocity v (6k). Fixed capacity: no heap allocation.
-struct InertiaContribution {
-  ElementMatrix mass;                ///< M (6k × 6k), constant
-  ElementVector gyroscopic;          ///< f_gyr(v) (6k)
-  ElementMatrix gyroscopic_tangent;  ///< ∂f_gyr/∂v (6k × 6k)
+/// The inertia of k frames in factored form, M_IJ = m_IJ diag(ρA I, ρJ) (003 eq. 32): a beam
+/// element's consistent mass with m_IJ = ∫ N_I N_J dS, or a rigid body as one frame with m_11 = 1,
+/// ρA = m, ρJ = J. The factored products cost k²·6 + k·9 multiplications where the dense 6k × 6k
+/// matrix would cost 36 k². Fixed capacity: no heap allocation.
+class FrameInertia {
+public:
+  using Coefficients = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor,
+                                     max_beam_element_nodes, max_beam_element_nodes>;
+
+  FrameInertia() = default;
+  /// k frames with coefficients m_IJ (k × k, symmetric), translational factor ρA (or m) and
+  /// rotational factor ρJ (or J, body frame).
+  FrameInertia(const Coefficients& coefficients, double translational, const Eigen::Matrix3d& rotational);
+
+  /// The number of frames k.
+  int frame_count() const { return static_cast<int>(coefficients_.rows()); }
+  /// Adds M v̇ + f_gyr(v), f_gyr,I = (0, Ω_I × Π_I), Π_I = Σ_J m_IJ ρJ Ω_J (docs/dynamics.md eq.
+  /// D2), at local velocity v and acceleration v̇ (6k each), to `force`.
+  void add_force(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                 const Eigen::Ref<const Eigen::VectorXd>& acceleration,
+                 Eigen::Ref<Eigen::VectorXd> force) const;
+  /// Adds the mass matrix M (6k × 6k) to `mass`.
+  void add_mass(Eigen::Ref<Eigen::MatrixXd> mass) const;
+  /// Adds ∂f_gyr/∂v: ∂f_I/∂Ω_K = −hat(Π_I) δ_IK + hat(Ω_I) m_IK ρJ, to `tangent`.
+  void add_gyroscopic_tangent(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                              Eigen::Ref<Eigen::MatrixXd> tangent) const;
+  /// ½ vᵀ M v.
+  double kinetic_energy(const Eigen::Ref<const Eigen::VectorXd>& velocity) const;
+
+private:
+  /// Σ_J m_IJ Ω_J for every frame I (3 × k).
+  Eigen::Matrix<double, 3, Eigen::Dynamic, Eigen::ColMajor, 3, max_beam_element_nodes> weighted_angular_velocities(
+      const Eigen::Ref<const Eigen::VectorXd>& velocity) const;
+
+  Coefficients coefficients_;
+  double translational_ = 0.0;
+  Eigen::Matrix3d rotational_ = Eigen::Matrix3d::Zero();
 };
 
-/// The constant mass matrix of element e of a beam, M_IJ = m_IJ diag(ρA I, ρJ) (6(p + 1) square).
-void beam_element_mass(const GeometricallyExactBeam& beam, int e, ElementMatrix& mass);
-
-/// Adds the gyroscopic force f_I = Ω_I × Π_I, Π_I = Σ_J M_IJ^ΩΩ Ω_J, of frames with mass matrix
-/// `mass` at local velocity v to `force` (docs/dynamics.md eq. D2).
-void add_gyroscopic_force(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                          Eigen::Ref<Eigen::VectorXd> force);
-/// Adds its velocity tangent ∂f_I/∂Ω_K = −hat(Π_I) δ_IK + hat(Ω_I) M_IK^ΩΩ to `tangent`.
-void add_gyroscopic_tangent(const ElementMatrix& mass, const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                            Eigen::Ref<Eigen::MatrixXd> tangent);
-
-/// Inertia of element e of a beam at the element's local velocity v (6(p + 1) entries).
-void beam_element_inertia(const GeometricallyExactBeam& beam, int e,
-                          const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                          InertiaContribution& out);
-
-/// Inertia of a rigid body at its local velocity v (6): M = diag(m I, J), f_gyr = (0, Ω × JΩ).
-void rigid_body_inertia(const RigidBody& body, const Eigen::Ref<const Eigen::VectorXd>& velocity,
-                        InertiaContribution& out);
-
-/// ½ vᵀ M v of a contribution at its local velocity v.
-double kinetic_energy(const InertiaContribution& c, const Eigen::Ref<const Eigen::VectorXd>& velocity);
+/// The inertia of element e of a beam (k = p + 1 frames, 003 eqs. 30–32).
+FrameInertia beam_element_inertia(const GeometricallyExactBeam& beam, int e);
+/// The inertia of a rigid body: one frame, M = diag(m I, J), f_gyr = (0, Ω × JΩ).
+FrameInertia rigid_body_inertia(const RigidBody& body);
 
 }  // namespace spar::core

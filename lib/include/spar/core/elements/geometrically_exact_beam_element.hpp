@@ -8,6 +8,7 @@
 #include <spar/core/beam.hpp>
 #include <spar/core/beam_element.hpp>
 #include <spar/core/element.hpp>
+#include <spar/core/inertia.hpp>
 
 #include <string>
 #include <vector>
@@ -31,8 +32,8 @@ private:
   std::vector<int> blocks_;
   /// ∫ N_I dS over the element (part-0 Gauss points): consistent nodal weights of a uniform load.
   std::vector<double> shape_integrals_;
-  /// The constant consistent mass matrix (core/inertia.hpp), computed once.
-  ElementMatrix mass_;
+  /// The constant consistent mass in factored form (core/inertia.hpp), computed once.
+  FrameInertia inertia_;
 };
 
 /// ∫ N_I dS over element e of a beam, one entry per control point of the element: the consistent
