@@ -98,6 +98,9 @@ struct GeneralizedAlpha::Implementation {
   DynamicCounters counters;
   // Energy balance (eq. D8).
   double initial_energy = 0.0, external_work = 0.0;
+  /// The elements' energies in the assembly are not those of the current state (the step ended on
+  /// evaluate_constraints_and_loads): energies() evaluates them first.
+  bool energies_stale = false;
   Eigen::VectorXd last_work_force;
   std::vector<std::pair<double, std::string>> events;
   InitialAssembly assembly_report;
@@ -170,12 +173,22 @@ struct GeneralizedAlpha::Implementation {
     ++counters.residual_evaluations;
     const bool frozen = options.iteration_matrix == IterationMatrix::frozen && initialized && !exact_mass;
     assembly.evaluate(input(time), lambda, c, Chart::local_increment, increment, frozen);
+    if (!c) energies_stale = false;  // a residual-only evaluation computes the energies
     auto dynamic = assembly.residual().head(assembly.dof_count());
     for (int dof : model.fixed_dofs()) dynamic(dof) = 0.0;
     dynamic /= residual_scale;
   }
 
+  /// The constraints and loads at an iterate that the Newton test may accept without the dynamic
+  /// residual (SystemAssembly::evaluate_constraints_and_loads): the energies of the elements are
+  /// computed when asked for (energies()).
+  void evaluate_constraints_and_loads(double time) {
+    assembly.evaluate_constraints_and_loads(input(time), lambda, increment);
+    energies_stale = true;
+  }
+
   bool dynamic_residual_small(double residual_scale) const {
+    if (!std::isfinite(options.residual_tolerance)) return true;  // the test is off
     const double floor = detail::residual_round_off_floor(assembly.pattern().matrix(), model.state());
     const Eigen::VectorXd& r = assembly.residual();
     for (int i = 0; i < assembly.dof_count(); ++i)
@@ -199,8 +212,10 @@ struct GeneralizedAlpha::Implementation {
   /// Factorizes the assembled matrix after the Dirichlet conditions; a singular matrix is a
   /// modelling error that no smaller step repairs.
   void factorize(double time) {
-    Eigen::VectorXd unused = Eigen::VectorXd::Zero(assembly.size());
-    assembly.pattern().apply_dirichlet(model.fixed_dofs(), unused);
+    if (!model.fixed_dofs().empty()) {
+      Eigen::VectorXd unused = Eigen::VectorXd::Zero(assembly.size());
+      assembly.pattern().apply_dirichlet(model.fixed_dofs(), unused);
+    }
     try {
       solver->factorize(assembly.pattern().matrix());
     } catch (const Error& error) {
@@ -547,8 +562,14 @@ struct GeneralizedAlpha::Implementation {
   struct EvaluationFailure {};
 
   void guarded_evaluate(double time, const MatrixCoefficients* c, double residual_scale) {
+    guarded([&] { evaluate(time, c, residual_scale); });
+  }
+
+  /// Runs an evaluation; an element's or joint's spar::Error becomes an EvaluationFailure.
+  template <class Evaluation>
+  void guarded(const Evaluation& evaluation) {
     try {
-      evaluate(time, c, residual_scale);
+      evaluation();
     } catch (const InputError&) {
       throw;  // bad input: a shorter step would meet it again (the user step is restored)
     } catch (const Error& error) {
@@ -568,7 +589,13 @@ struct GeneralizedAlpha::Implementation {
       const bool expect_convergence = norm_squared <= options.tolerance;
       const bool need_matrix = options.iteration_matrix != IterationMatrix::modified ||
                                !have_factorization || refactor_requested;
-      guarded_evaluate(t_next, need_matrix && !expect_convergence ? &coefficients : nullptr, beta_prime);
+      // With the dynamic residual untested (003's test), an iterate that may be the last needs
+      // only Φ: the elements are evaluated when the test fails (docs/dynamics.md D4).
+      const bool constraints_only = expect_convergence && !std::isfinite(options.residual_tolerance);
+      if (constraints_only)
+        guarded([&] { evaluate_constraints_and_loads(t_next); });
+      else
+        guarded_evaluate(t_next, need_matrix && !expect_convergence ? &coefficients : nullptr, beta_prime);
       if (!assembly.residual().allFinite()) {
         last_failure = "the residual is not finite";
         return false;
@@ -582,7 +609,10 @@ struct GeneralizedAlpha::Implementation {
         last_failure = "Newton did not converge in max_iterations";
         return false;
       }
-      if (need_matrix && expect_convergence) guarded_evaluate(t_next, &coefficients, beta_prime);
+      if (constraints_only)
+        guarded_evaluate(t_next, need_matrix ? &coefficients : nullptr, beta_prime);
+      else if (need_matrix && expect_convergence)
+        guarded_evaluate(t_next, &coefficients, beta_prime);
       if (need_matrix) {
         if (options.iteration_matrix != IterationMatrix::frozen) ++counters.jtheta_evaluations;
         // A non-finite tangent at an iterate fails the iteration (the step is cut back), as a
@@ -920,7 +950,9 @@ double GeneralizedAlpha::constraint_residual() const {
 }
 
 Energies GeneralizedAlpha::energies() const {
-  // The last evaluation of every step (and of initialize) is at the accepted state.
+  // The last evaluation of every step (and of initialize) is at the accepted state; when it
+  // evaluated the constraints and loads only, the elements' energies are computed now.
+  if (impl_->energies_stale) impl_->evaluate(impl_->t, nullptr, 1.0);
   const detail::SummedEnergies e = impl_->assembly.energies();
   Energies energies{.kinetic = e.kinetic, .strain = e.strain, .gravity = e.gravity,
                     .external_work = impl_->external_work};

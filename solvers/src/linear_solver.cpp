@@ -113,12 +113,13 @@ void LinearSolver::factorize(const SparseMatrix& A) {
                 "call analyze(A) again after a change of pattern");
   factorized_ = false;
   // KLU factorizes a NaN matrix and solves to NaN; every backend refuses it here, naming the entry.
-  for (int column = 0; column < n; ++column)
-    for (SparseMatrix::InnerIterator entry(A, column); entry; ++entry)
-      if (!std::isfinite(entry.value()))
-        throw Error("the matrix has the non-finite entry " + significant(entry.value()) + " at (" +
-                        std::to_string(entry.row()) + ", " + std::to_string(column) + ")",
-                    where("factorize"), "check the model: an element or a constraint gave a NaN or infinite tangent");
+  if (!Eigen::Map<const Eigen::ArrayXd>(A.valuePtr(), A.nonZeros()).allFinite())
+    for (int column = 0; column < n; ++column)
+      for (SparseMatrix::InnerIterator entry(A, column); entry; ++entry)
+        if (!std::isfinite(entry.value()))
+          throw Error("the matrix has the non-finite entry " + significant(entry.value()) + " at (" +
+                          std::to_string(entry.row()) + ", " + std::to_string(column) + ")",
+                      where("factorize"), "check the model: an element or a constraint gave a NaN or infinite tangent");
   if (factorize_values(A) == FactorizationOutcome::singular)
     throw Error(
         "numerically singular iteration matrix — check for a redundant constraint or an "

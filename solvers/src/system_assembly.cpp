@@ -62,7 +62,9 @@ void SystemAssembly::rebuild() {
   dof_count_ = model_.dof_count();
   std::vector<core::PatternBlock> pattern_blocks;
   element_work_.resize(static_cast<std::size_t>(model_.element_count()));
+  load_elements_.clear();
   for (int id = 0; id < model_.element_count(); ++id) {
+    if (model_.element(id).has_external_force()) load_elements_.push_back(id);
     element_work_[id].dofs = core::block_dofs(q, model_.element(id).blocks());
     element_work_[id].frozen_mass.resize(0, 0);
     pattern_blocks.push_back(core::PatternBlock::element(element_work_[id].dofs));
@@ -207,13 +209,35 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
       scale_(w.dofs[i]) += std::abs(w.output.residual(local));
       if (with_energy) external_force_(w.dofs[i]) += w.output.external_force(local);
     }
-  for (const ConstraintWork& w : constraint_work_) {
-    for (std::size_t i = 0; i < w.dofs.size(); ++i) {
-      residual_(w.dofs[i]) += w.force(static_cast<Eigen::Index>(i));
-      scale_(w.dofs[i]) += std::abs(w.force(static_cast<Eigen::Index>(i)));
-      constraint_force_(w.dofs[i]) += w.force(static_cast<Eigen::Index>(i));
+  for (const ConstraintWork& w : constraint_work_) gather_constraint(w, true);
+}
+
+void SystemAssembly::gather_constraint(const ConstraintWork& w, bool with_residual) {
+  for (std::size_t i = 0; i < w.dofs.size(); ++i) {
+    const double f = w.force(static_cast<Eigen::Index>(i));
+    if (with_residual) {
+      residual_(w.dofs[i]) += f;
+      scale_(w.dofs[i]) += std::abs(f);
     }
-    residual_.segment(dof_count_ + w.first_multiplier, w.value.size()) = w.value;
+    constraint_force_(w.dofs[i]) += f;
+  }
+  residual_.segment(dof_count_ + w.first_multiplier, w.value.size()) = w.value;
+}
+
+void SystemAssembly::evaluate_constraints_and_loads(const core::ElementInput& in,
+                                                    const Eigen::VectorXd& lambda,
+                                                    const Eigen::VectorXd& increment) {
+  constraint_force_.setZero();
+  for (int ci = 0; ci < static_cast<int>(constraint_work_.size()); ++ci) {
+    compute_constraint(ci, in, lambda, nullptr, Chart::local_increment, increment, nullptr);
+    gather_constraint(constraint_work_[ci], false);
+  }
+  external_force_.setZero();
+  for (const int id : load_elements_) {
+    compute_element(id, in, nullptr, Chart::local_increment, increment, false, nullptr);
+    const ElementWork& w = element_work_[id];
+    for (std::size_t i = 0; i < w.dofs.size(); ++i)
+      external_force_(w.dofs[i]) += w.output.external_force(static_cast<Eigen::Index>(i));
   }
 }
 

@@ -91,6 +91,12 @@ public:
                         ElementOutput& out) const = 0;
   /// A short name for messages ("beam 1, element 3").
   virtual std::string name() const = 0;
+  /// True for an element whose residual holds an external force without a potential (a load):
+  /// ElementOutput::external_force on an energy request. The integrator books that force's work
+  /// at every step, and when its Newton test needs nothing else of the elements (the dynamic
+  /// residual untested) it evaluates these elements alone (docs/dynamics.md D8). An element that
+  /// returns an external force must say so here, or its work is missing from such runs' balance.
+  virtual bool has_external_force() const { return false; }
 };
 
 }  // namespace spar::core

@@ -28,6 +28,7 @@ public:
   void evaluate(const ElementInput& in, const ElementRequest& request,
                 ElementOutput& out) const override;
   std::string name() const override { return "load " + std::to_string(load_index_); }
+  bool has_external_force() const override { return true; }
   const Load& load() const { return load_; }
 
 private:
@@ -50,6 +51,7 @@ public:
   std::string name() const override {
     return "load " + std::to_string(load_index_) + " on element " + std::to_string(element_);
   }
+  bool has_external_force() const override { return true; }
   const Load& load() const { return load_; }
 
 private:

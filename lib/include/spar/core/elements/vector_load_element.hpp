@@ -23,6 +23,7 @@ public:
   void evaluate(const ElementInput& in, const ElementRequest& request,
                 ElementOutput& out) const override;
   std::string name() const override { return "vector load " + std::to_string(load_index_); }
+  bool has_external_force() const override { return true; }
 
 private:
   std::vector<int> blocks_;
