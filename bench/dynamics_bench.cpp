@@ -1,6 +1,10 @@
 // End-to-end dynamics: the slider-crank of 003 §5.1 in each iteration-matrix strategy (whole run
-// and single steps), and the OpenMP speed-up of assembly on a 256-element beam.
+// and single steps), the limit a step cannot beat (one residual and one back-substitution), and
+// the OpenMP speed-up of assembly on a 256-element beam.
 #include <spar/spar.hpp>
+
+// The solvers' private assembly, to time one residual evaluation by itself.
+#include "system_assembly.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -33,6 +37,55 @@ void slider_crank_run(benchmark::State& state) {
   state.SetLabel(std::string(solvers::to_string(strategy)));
 }
 BENCHMARK(slider_crank_run)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+/// The limit of a step (issue 17): one evaluation of the residual [r; Φ] and one back-substitution
+/// with a factorization kept from before, at the state of t = 0.1 s. A Newton step needs at least
+/// that much; docs/performance.md gives every strategy's cost per step as a multiple of it.
+/// Arg 0: both; 1: the residual alone; 2: the back-substitution alone.
+void slider_crank_limit(benchmark::State& state) {
+  // The state at t = 0.1 s, reached by the integrator, copied into a second, identical mechanism
+  // whose joints this benchmark still owns.
+  examples::SliderCrank running = examples::build_slider_crank(6);
+  solvers::GeneralizedAlpha integrator(running.model, std::move(running.joints),
+                                       paper_options(solvers::IterationMatrix::update));
+  while (integrator.time() < 0.1 - 0.5e-4) integrator.step();
+  examples::SliderCrank mechanism = examples::build_slider_crank(6);
+  mechanism.model.state() = integrator.configuration();
+  std::vector<joints::Constraint*> constraints;
+  for (auto& joint : mechanism.joints) constraints.push_back(joint.get());
+  solvers::detail::SystemAssembly assembly(mechanism.model, constraints, core::AssemblyExecution::serial);
+  const Eigen::VectorXd velocity = integrator.velocity(), acceleration = integrator.acceleration();
+  const Eigen::VectorXd lambda = integrator.multipliers();
+  const Eigen::VectorXd increment = Eigen::VectorXd::Zero(assembly.dof_count());
+  core::ElementInput in;
+  in.q = &mechanism.model.state();
+  in.velocity = &velocity;
+  in.acceleration = &acceleration;
+  in.time = integrator.time();
+  in.gravity = mechanism.model.gravity();
+  // The iteration matrix of h = 1e-4 and ρ∞ = 0.9, factorized once.
+  const auto alpha = solvers::GeneralizedAlphaParameters::from_spectral_radius(0.9);
+  const double h = 1e-4, beta_prime = (1 - alpha.alpha_m) / (h * h * alpha.beta * (1 - alpha.alpha_f));
+  const solvers::detail::MatrixCoefficients c{.mass = 1.0, .damping = alpha.gamma / (h * alpha.beta) / beta_prime,
+                                              .stiffness = 1.0 / beta_prime};
+  assembly.evaluate(in, lambda, &c, solvers::detail::Chart::local_increment, increment, false);
+  const auto solver = solvers::make_linear_solver(solvers::LinearSolverKind::klu);
+  solver->analyze(assembly.pattern().matrix());
+  solver->factorize(assembly.pattern().matrix());
+  Eigen::VectorXd solution(assembly.size());
+  const bool residual = state.range(0) != 2, solve = state.range(0) != 1;
+  for (auto _ : state) {
+    if (residual)
+      assembly.evaluate(in, lambda, nullptr, solvers::detail::Chart::local_increment, increment, false);
+    if (solve) {
+      solution = -assembly.residual();
+      solver->solve(solution);
+    }
+    benchmark::DoNotOptimize(solution.data());
+  }
+  state.SetLabel(residual && solve ? "residual + back-substitution" : residual ? "residual" : "back-substitution");
+}
+BENCHMARK(slider_crank_limit)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 
 /// One step at h = 1e-4 from t = 0.1 s (mid-run, the crank at speed).
 void slider_crank_step(benchmark::State& state) {

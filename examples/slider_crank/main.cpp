@@ -2,7 +2,8 @@
 //
 // Sample runs:
 //   slider_crank                                          (h = 5e-4, frozen, 0.2 s)
-//   slider_crank --h 1e-4 --strategy update
+//   slider_crank --h 1e-4 --strategy update               (recorded every 5e-4 s, every 5th step)
+//   slider_crank --h 1e-4 --output-interval 0             (every step recorded)
 //   slider_crank --strategy modified --out results/slider_crank_modified
 //   slider_crank --tolerance 1e-16 --strategy frozen      (tight Newton tolerance)
 //
@@ -27,6 +28,7 @@
 
 #include "slider_crank_model.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -35,6 +37,7 @@
 using namespace spar;
 
 int main(int argc, char** argv) try {
+  const auto started = std::chrono::steady_clock::now();  // the whole run, output included
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "slider_crank: the flexible slider-crank of 003 section 5.1");
   const double h = cli.number("--h", 5e-4, "time step [s]", examples::Range::positive());
@@ -57,6 +60,9 @@ int main(int argc, char** argv) try {
   const double drive_rise_time = cli.number("--drive-rise-time", 0.0,
                                             "ramp the drive from 0 to M over this time [s] (0: the paper's step)",
                                             examples::Range::between(0, 1e3));
+  const double output_interval =
+      cli.number("--output-interval", 5e-4, "time between recorded states [s], a whole number of steps (0: every step)",
+                 examples::Range::between(0, 1e3));
   const std::string out = cli.output_folder("--out", "results/slider_crank", "output folder");
   if (!cli.finish()) return 0;
   examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
@@ -82,6 +88,9 @@ int main(int argc, char** argv) try {
   integrator.initialize();
   const core::Configuration initial_state = model.state();  // the reference geometry, for arc lengths
 
+  // The summary's extremes are taken at every step; the states are recorded every
+  // `record_every` steps (the first and the last always).
+  const long record_every = std::max(1L, std::lround(output_interval / h));
   const int samples = 10 * elements + 1;  // centerline points per rod in the results file
   const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank, initial_state, samples);
   const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler, initial_state, samples);
@@ -114,6 +123,7 @@ int main(int argc, char** argv) try {
   results.write_attribute("example", "slider_crank (003 section 5.1)");
   results.write_attribute("time_step", h);
   results.write_attribute("strategy", strategy);
+  results.write_attribute("output_interval", static_cast<double>(record_every) * h);
   std::ofstream csv(out + "/slider_crank.csv");
   csv.precision(15);
   csv << "t,rod2_deformation_rate,rod1_angular_speed,slider_x,rod2_mid_x,rod2_mid_y,rod2_mid_z,"
@@ -121,7 +131,7 @@ int main(int argc, char** argv) try {
       << examples::energy_balance_csv_columns << '\n';
   double max_speed = 0.0, max_rate = 0.0, max_residual = 0.0;
   std::optional<double> slider_x_at_0_1;  // the slider at t = 0.1 s, to compare runs and engines
-  auto record = [&]() {
+  auto observe = [&](bool last) {
     const core::Configuration& q = model.state();
     const double rate = examples::deformation_rate(coupler, q, length_2);
     // Rod I's angular speed about Z: the rotation rate of its chord, (r × ṙ)_z / |r|² with
@@ -132,12 +142,13 @@ int main(int argc, char** argv) try {
                                        integrator.velocity().segment<3>(q.blocks[crank_root].offset);
     const double speed = chord.cross(chord_rate).z() / chord.squaredNorm();
     const double residual = integrator.constraint_residual();
-    const solvers::Energies energy = integrator.energies();
-    const Eigen::Vector3d midpoint = coupler.position_at(q, 0.5);
     if (std::abs(integrator.time() - 0.1) <= 0.5 * h) slider_x_at_0_1 = q.position[slider].x();
     max_speed = std::max(max_speed, std::abs(speed));
     max_rate = std::max(max_rate, rate);
     max_residual = std::max(max_residual, residual);
+    if (!last && integrator.counters().steps % record_every != 0) return;
+    const solvers::Energies energy = integrator.energies();
+    const Eigen::Vector3d midpoint = coupler.position_at(q, 0.5);
     csv << integrator.time() << ',' << rate << ',' << speed << ',' << q.position[slider].x() << ','
         << midpoint.x() << ',' << midpoint.y() << ',' << midpoint.z() << ',' << residual << ','
         << integrator.last_step_iterations() << ',' << energy.kinetic << ',' << energy.strain << ','
@@ -156,17 +167,20 @@ int main(int argc, char** argv) try {
                         examples::centerline_fields(crank, crank_arc_length, q, integrator.velocity()),
                         examples::centerline_fields(coupler, coupler_arc_length, q, integrator.velocity())}});
   };
-  record();
+  observe(false);
   core::ProgressBar progress(t_end, "slider_crank");
   while (integrator.time() < t_end - 0.5 * h) {
     integrator.step();
-    record();
+    observe(integrator.time() >= t_end - 0.5 * h);
     progress.update(integrator.time(), integrator.counters().steps);
   }
   progress.finish();
   const solvers::DynamicCounters& counters = integrator.counters();
   examples::write_run_counters(results, integrator);
+  const int recorded_states = results.steps_written();
   results.close();
+  csv.close();
+  const double total_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
   // 4. Report.
   std::printf("slider_crank, h = %g s, %s: %ld steps, %ld Newton iterations, %ld J_theta updates, "
@@ -181,7 +195,8 @@ int main(int argc, char** argv) try {
       .add("jtheta_updates", static_cast<int>(counters.jtheta_evaluations))
       .add("factorizations", static_cast<int>(counters.factorizations))
       .add("cutbacks", static_cast<int>(counters.cutbacks))
-      .add("wall_s", counters.wall_seconds).add("max_rod1_speed", max_speed)
+      .add("wall_s", counters.wall_seconds).add("total_wall_s", total_wall)
+      .add("recorded_states", recorded_states).add("max_rod1_speed", max_speed)
       .add("max_rod2_deformation_rate", max_rate).add("max_constraint_residual", max_residual)
       .add("slider_x_at_0_1", slider_x_at_0_1)
       .add("external_work", integrator.energies().external_work)
