@@ -169,11 +169,15 @@ struct GeneralizedAlpha::Implementation {
   /// Scaled residual [r/β′ ; Φ] at the current state (the iteration matrix too when `c` is given).
   /// With `exact_mass`, the frozen strategy's stored rotation blocks are not used (the start-up and
   /// event projections need the true M).
-  void evaluate(double time, const MatrixCoefficients* c, double residual_scale, bool exact_mass = false) {
+  /// A residual-only evaluation computes the energies too, unless `with_energies` is false (an
+  /// iterate that cannot be accepted).
+  void evaluate(double time, const MatrixCoefficients* c, double residual_scale, bool exact_mass = false,
+                bool with_energies = true) {
     ++counters.residual_evaluations;
     const bool frozen = options.iteration_matrix == IterationMatrix::frozen && initialized && !exact_mass;
-    assembly.evaluate(input(time), lambda, c, Chart::local_increment, increment, frozen);
-    if (!c) energies_stale = false;  // a residual-only evaluation computes the energies
+    const bool energies = !c && with_energies;
+    assembly.evaluate(input(time), lambda, c, Chart::local_increment, increment, frozen, energies);
+    energies_stale = !energies;
     auto dynamic = assembly.residual().head(assembly.dof_count());
     for (int dof : model.fixed_dofs()) dynamic(dof) = 0.0;
     dynamic /= residual_scale;
@@ -561,8 +565,9 @@ struct GeneralizedAlpha::Implementation {
   /// last_failure): the iteration has failed and the step is cut back.
   struct EvaluationFailure {};
 
-  void guarded_evaluate(double time, const MatrixCoefficients* c, double residual_scale) {
-    guarded([&] { evaluate(time, c, residual_scale); });
+  void guarded_evaluate(double time, const MatrixCoefficients* c, double residual_scale,
+                        bool with_energies = true) {
+    guarded([&] { evaluate(time, c, residual_scale, false, with_energies); });
   }
 
   /// Runs an evaluation; an element's or joint's spar::Error becomes an EvaluationFailure.
@@ -594,8 +599,9 @@ struct GeneralizedAlpha::Implementation {
       const bool constraints_only = expect_convergence && !std::isfinite(options.residual_tolerance);
       if (constraints_only)
         guarded([&] { evaluate_constraints_and_loads(t_next); });
-      else
-        guarded_evaluate(t_next, need_matrix && !expect_convergence ? &coefficients : nullptr, beta_prime);
+      else  // the energies only where the iterate may be accepted
+        guarded_evaluate(t_next, need_matrix && !expect_convergence ? &coefficients : nullptr, beta_prime,
+                         expect_convergence);
       if (!assembly.residual().allFinite()) {
         last_failure = "the residual is not finite";
         return false;
@@ -610,7 +616,7 @@ struct GeneralizedAlpha::Implementation {
         return false;
       }
       if (constraints_only)
-        guarded_evaluate(t_next, need_matrix ? &coefficients : nullptr, beta_prime);
+        guarded_evaluate(t_next, need_matrix ? &coefficients : nullptr, beta_prime, false);
       else if (need_matrix && expect_convergence)
         guarded_evaluate(t_next, &coefficients, beta_prime);
       if (need_matrix) {

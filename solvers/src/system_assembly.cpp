@@ -95,7 +95,7 @@ void SystemAssembly::rebuild() {
 void SystemAssembly::compute_element(int id, const core::ElementInput& in,
                                      const MatrixCoefficients* c, Chart chart,
                                      const Eigen::VectorXd& increment, bool use_frozen,
-                                     Eigen::MatrixXd* K) {
+                                     Eigen::MatrixXd* K, bool with_energies) {
   const core::Element& element = model_.element(id);
   ElementWork& w = element_work_[id];
   const bool dynamic = in.dynamic();
@@ -106,7 +106,7 @@ void SystemAssembly::compute_element(int id, const core::ElementInput& in,
   request.skip_rotation_blocks = use_frozen;
   // A converged step ends on a residual-only evaluation (docs/dynamics.md D4): the energies of
   // the accepted state come from there.
-  request.energy = (c == nullptr);
+  request.energy = (c == nullptr) && with_energies;
   const int n = static_cast<int>(w.dofs.size());
   w.output.reset(n, request);
   element.evaluate(in, request, w.output);
@@ -176,7 +176,8 @@ void SystemAssembly::compute_constraint(int ci, const core::ElementInput& in,
 
 void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorXd& lambda,
                               const MatrixCoefficients* c, Chart chart,
-                              const Eigen::VectorXd& increment, bool use_frozen) {
+                              const Eigen::VectorXd& increment, bool use_frozen,
+                              bool with_energies) {
   const int element_count = static_cast<int>(element_work_.size());
   const int total = element_count + static_cast<int>(constraints_.size());
   if (c) {
@@ -191,7 +192,7 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
   } else {
     for_each_index(total, execution_ == core::AssemblyExecution::parallel, [&](int id) {
       if (id < element_count)
-        compute_element(id, in, nullptr, chart, increment, false, nullptr);
+        compute_element(id, in, nullptr, chart, increment, false, nullptr, with_energies);
       else
         compute_constraint(id - element_count, in, lambda, nullptr, chart, increment, nullptr);
     });
@@ -200,7 +201,7 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
   residual_.setZero();
   scale_.setZero();
   constraint_force_.setZero();
-  const bool with_energy = (c == nullptr);
+  const bool with_energy = (c == nullptr) && with_energies;
   if (with_energy) external_force_.setZero();
   for (const ElementWork& w : element_work_)
     for (std::size_t i = 0; i < w.dofs.size(); ++i) {

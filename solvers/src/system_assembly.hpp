@@ -61,9 +61,11 @@ public:
   /// to the chart's unknowns with `increment` (the step's increment or the converged chart φ).
   /// With `use_frozen`, the rotation–rotation blocks of frames are those stored by freeze().
   /// An element's or joint's spar::Error propagates (after every thread has finished).
+  /// A residual-only evaluation also gathers the energies and external forces unless
+  /// `with_energies` is false (an iterate that is not going to be accepted).
   void evaluate(const core::ElementInput& in, const Eigen::VectorXd& lambda,
                 const MatrixCoefficients* c, Chart chart, const Eigen::VectorXd& increment,
-                bool use_frozen);
+                bool use_frozen, bool with_energies = true);
 
   /// What a Newton test that leaves the dynamic residual untested needs at an iterate, at a
   /// fraction of evaluate()'s cost: every constraint (Φ into residual()'s multiplier rows, Bᵀλ
@@ -109,7 +111,7 @@ private:
 
   void compute_element(int id, const core::ElementInput& in, const MatrixCoefficients* c,
                        Chart chart, const Eigen::VectorXd& increment, bool use_frozen,
-                       Eigen::MatrixXd* K);
+                       Eigen::MatrixXd* K, bool with_energies = true);
   void compute_constraint(int ci, const core::ElementInput& in, const Eigen::VectorXd& lambda,
                           const MatrixCoefficients* c, Chart chart,
                           const Eigen::VectorXd& increment, Eigen::MatrixXd* K);

@@ -36,6 +36,7 @@ struct PointKinematics {
   Vector3 v;                               // R_rᵀ x′
   Vector3 w;                               // Eᵀ v = Rᵀ x′
   Vector3 kappa;                           // T Θ′
+  Matrix3 kappa_derivative;                // ∂(TΘ′)/∂Θ
 };
 
 PointKinematics kinematics(const detail::RelativeRotations& rel,
@@ -46,21 +47,37 @@ PointKinematics kinematics(const detail::RelativeRotations& rel,
   k.v = rel.reference.transpose() * f.x_prime;
   k.w = k.exp_tangent.rotation.transpose() * k.v;
   k.kappa = k.exp_tangent.tangent * f.theta_prime;
+  k.kappa_derivative = lie::tangent_derivative(f.theta, f.theta_prime);
   return k;
 }
 
 /// B = ∂ε/∂z (docs/beam.md eq. B5):
 ///   γ rows: [Rᵀ, Eᵀ hat(v), hat(w) T, 0],  κ rows: [0, 0, ∂(TΘ′)/∂Θ, T].
-Matrix6x12 strain_operator(const PointKinematics& k, const detail::InterpolatedFields& f) {
+Matrix6x12 strain_operator(const PointKinematics& k) {
   const Matrix3& E = k.exp_tangent.rotation;
   const Matrix3& T = k.exp_tangent.tangent;
   Matrix6x12 B = Matrix6x12::Zero();
   B.block<3, 3>(0, 3 * z_x_prime) = k.rotation.transpose();
   B.block<3, 3>(0, 3 * z_a) = E.transpose() * lie::hat(k.v);
   B.block<3, 3>(0, 3 * z_theta) = lie::hat(k.w) * T;
-  B.block<3, 3>(3, 3 * z_theta) = lie::tangent_derivative(f.theta, f.theta_prime);
+  B.block<3, 3>(3, 3 * z_theta) = k.kappa_derivative;
   B.block<3, 3>(3, 3 * z_theta_prime) = T;
   return B;
+}
+
+/// Bᵀσ for σ = (n, m), written out from B's blocks (eq. B5) without forming B — the force
+/// alone needs no more:  [R n,  (E n) × v,  Tᵀ (n × w) + (∂(TΘ′)/∂Θ)ᵀ m,  Tᵀ m].
+Vector12 strain_operator_transpose_times(const PointKinematics& k, const Vector3& n, const Vector3& m) {
+  const Matrix3& E = k.exp_tangent.rotation;
+  const Matrix3& T = k.exp_tangent.tangent;
+  const Vector3 En = E * n;
+  Vector12 g;
+  g.segment<3>(3 * z_x_prime) = k.rotation * n;
+  g.segment<3>(3 * z_a) = En.cross(k.v);
+  g.segment<3>(3 * z_theta) =
+      T.transpose() * n.cross(k.w) + k.kappa_derivative.transpose() * m;
+  g.segment<3>(3 * z_theta_prime) = T.transpose() * m;
+  return g;
 }
 
 /// The geometric part Σ σ_i ∂²ε_i/∂z² with σ = (n, m) (docs/beam.md eqs. B6–B7).
@@ -188,17 +205,16 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
     const Eigen::Matrix<double, 6, 1> stress = C * strain;  // (N, M), 003 eq. 17
     result.strain_energy += 0.5 * gp.weight * strain.dot(stress);
 
-    const Matrix6x12 B = strain_operator(kin, f);
-    const Vector12 g_z = gp.weight * (B.transpose() * stress);
-    // C B once, then Bᵀ (C B) as a coefficient-wise product: Eigen would hand a 12 × 6 × 12
-    // product to its blocked GEMM, whose packing costs more than the product at this size.
-    Matrix6x12 CB;
-    if (with_stiffness) CB.noalias() = C * B;
+    const Vector12 g_z = gp.weight * strain_operator_transpose_times(kin, stress.head<3>(), stress.tail<3>());
     linear_maps(gp, k, maps);
     for (int j = 0; j < 2 * k; ++j)
       for (int t = 0; t < maps[j].count; ++t)
         g_y.segment<3>(3 * j) += maps[j].coefficient[t] * g_z.segment<3>(3 * maps[j].z_block[t]);
     if (!with_stiffness) continue;
+    // C B once, then Bᵀ (C B) as a coefficient-wise product: Eigen would hand a 12 × 6 × 12
+    // product to its blocked GEMM, whose packing costs more than the product at this size.
+    const Matrix6x12 B = strain_operator(kin);
+    const Matrix6x12 CB = C * B;
     if (!rotation_blocks) {
       // Only the x′ rows of H_z reach a translation row or column of K (B9 with the rotation
       // rows left out): H_z(x′, ·) = w (B_x′ᵀ C B + G(x′, ·)), G(x′, ·) from B6.
