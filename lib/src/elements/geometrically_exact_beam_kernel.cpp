@@ -206,11 +206,14 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
     result.strain_energy += 0.5 * gp.weight * strain.dot(stress);
 
     const Vector12 g_z = gp.weight * strain_operator_transpose_times(kin, stress.head<3>(), stress.tail<3>());
-    linear_maps(gp, k, maps);
-    for (int j = 0; j < 2 * k; ++j)
-      for (int t = 0; t < maps[j].count; ++t)
-        g_y.segment<3>(3 * j) += maps[j].coefficient[t] * g_z.segment<3>(3 * maps[j].z_block[t]);
+    // g_y += Lᵀ g_z for the linear map z ← y of B9: x′ = Σ N_I′ x_I, a, Θ = Σ N_I ψ_I, Θ′ = Σ N_I′ ψ_I.
+    for (int I = 0; I < k; ++I) g_y.segment<3>(3 * I) += gp.shape_derivative[I] * g_z.segment<3>(3 * z_x_prime);
+    g_y.segment<3>(3 * k) += g_z.segment<3>(3 * z_a);
+    for (int I = 1; I < k; ++I)
+      g_y.segment<3>(3 * (k + I)) += gp.shape[I] * g_z.segment<3>(3 * z_theta) +
+                                     gp.shape_derivative[I] * g_z.segment<3>(3 * z_theta_prime);
     if (!with_stiffness) continue;
+    linear_maps(gp, k, maps);
     // C B once, then Bᵀ (C B) as a coefficient-wise product: Eigen would hand a 12 × 6 × 12
     // product to its blocked GEMM, whose packing costs more than the product at this size.
     const Matrix6x12 B = strain_operator(kin);
