@@ -112,26 +112,35 @@ Matrix12 geometric_stiffness(const PointKinematics& k, const detail::Interpolate
   return G;
 }
 
-/// The linear map from y-block j to the z-blocks at one Gauss point: z_zb += c · y_j (B9).
-struct LinearMap {
-  int count = 0;
-  int z_block[2] = {0, 0};
-  double coefficient[2] = {0.0, 0.0};
-  void add(int zb, double c) {
-    z_block[count] = zb;
-    coefficient[count] = c;
-    ++count;
-  }
-};
+// The linear map z ← y of one Gauss point (B9): x′ = Σ N_I′ x_I, a, Θ = Σ N_I ψ_I (I ≥ 1),
+// Θ′ = Σ N_I′ ψ_I, with y-blocks x_I → I, a → k, ψ_I → k + I. H_y += Lᵀ H_z L is added block by
+// block in H_y's upper block triangle, the columns of ψ_J first combined into
+// H_z(·, Θ) N_J + H_z(·, Θ′) N_J′.
 
-/// y-blocks of an element with k nodes: x_I → I, a → k, ψ_I → k + I (I ≥ 1).
-void linear_maps(const BeamGaussPoint& gp, int k, std::array<LinearMap, 2 * max_beam_element_nodes>& maps) {
-  for (int j = 0; j < 2 * k; ++j) maps[j].count = 0;
-  for (int I = 0; I < k; ++I) maps[I].add(z_x_prime, gp.shape_derivative[I]);
-  maps[k].add(z_a, 1.0);
-  for (int I = 1; I < k; ++I) {
-    maps[k + I].add(z_theta, gp.shape[I]);
-    maps[k + I].add(z_theta_prime, gp.shape_derivative[I]);
+/// The rows of the k translations x_I: (Lᵀ H_z L)(x_I, ·) = N_I′ (H_z L)(x′, ·), from H_z's x′ rows.
+void add_translation_rows(const BeamGaussPoint& gp, int k, const Eigen::Matrix<double, 3, 12>& H_x,
+                          ElementMatrix& H_y) {
+  const Matrix3 H_xx = H_x.middleCols<3>(3 * z_x_prime), H_xa = H_x.middleCols<3>(3 * z_a);
+  for (int I = 0; I < k; ++I) {
+    const double dN_I = gp.shape_derivative[I];
+    for (int J = I; J < k; ++J) H_y.block<3, 3>(3 * I, 3 * J) += dN_I * gp.shape_derivative[J] * H_xx;
+    H_y.block<3, 3>(3 * I, 3 * k) += dN_I * H_xa;
+    for (int J = 1; J < k; ++J)
+      H_y.block<3, 3>(3 * I, 3 * (k + J)) +=
+          dN_I * (gp.shape[J] * H_x.middleCols<3>(3 * z_theta) + gp.shape_derivative[J] * H_x.middleCols<3>(3 * z_theta_prime));
+  }
+}
+
+/// The rows of a and of the k − 1 relative rotations ψ_I.
+void add_rotation_rows(const BeamGaussPoint& gp, int k, const Matrix12& H_z, ElementMatrix& H_y) {
+  H_y.block<3, 3>(3 * k, 3 * k) += H_z.block<3, 3>(3 * z_a, 3 * z_a);
+  for (int J = 1; J < k; ++J) {
+    const Eigen::Matrix<double, 12, 3> column = gp.shape[J] * H_z.middleCols<3>(3 * z_theta) +
+                                                gp.shape_derivative[J] * H_z.middleCols<3>(3 * z_theta_prime);
+    H_y.block<3, 3>(3 * k, 3 * (k + J)) += column.middleRows<3>(3 * z_a);
+    for (int I = 1; I <= J; ++I)
+      H_y.block<3, 3>(3 * (k + I), 3 * (k + J)) += gp.shape[I] * column.middleRows<3>(3 * z_theta) +
+                                                   gp.shape_derivative[I] * column.middleRows<3>(3 * z_theta_prime);
   }
 }
 
@@ -193,7 +202,6 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
   ElementVector g_y = ElementVector::Zero(n);
   ElementMatrix H_y;
   if (with_stiffness) H_y.setZero(n, n);
-  std::array<LinearMap, 2 * max_beam_element_nodes> maps;
   result.strain_energy = 0.0;
   for (const BeamGaussPoint& gp : beam.element(e).gauss_points) {
     const detail::InterpolatedFields f =
@@ -213,7 +221,6 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
       g_y.segment<3>(3 * (k + I)) += gp.shape[I] * g_z.segment<3>(3 * z_theta) +
                                      gp.shape_derivative[I] * g_z.segment<3>(3 * z_theta_prime);
     if (!with_stiffness) continue;
-    linear_maps(gp, k, maps);
     // C B once, then Bᵀ (C B) as a coefficient-wise product: Eigen would hand a 12 × 6 × 12
     // product to its blocked GEMM, whose packing costs more than the product at this size.
     const Matrix6x12 B = strain_operator(kin);
@@ -228,26 +235,15 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
           gp.weight * rel.reference * lie::hat(Vector3(kin.exp_tangent.rotation * stress.head<3>()));
       H_x.middleCols<3>(3 * z_theta) -=
           gp.weight * kin.rotation * lie::hat(Vector3(stress.head<3>())) * kin.exp_tangent.tangent;
-      for (int j = 0; j < k; ++j)
-        for (int l = j; l < 2 * k; ++l)
-          for (int t = 0; t < maps[l].count; ++t)
-            H_y.block<3, 3>(3 * j, 3 * l) += gp.shape_derivative[j] * maps[l].coefficient[t] *
-                                             H_x.middleCols<3>(3 * maps[l].z_block[t]);
+      add_translation_rows(gp, k, H_x, H_y);
       continue;
     }
 
     Matrix12 H_z = geometric_stiffness(kin, f, rel, stress.head<3>(), stress.tail<3>());
     H_z.noalias() += B.transpose().lazyProduct(CB);
     H_z *= gp.weight;
-    for (int j = 0; j < 2 * k; ++j) {
-      Eigen::Matrix<double, 3, 12> row = Eigen::Matrix<double, 3, 12>::Zero();
-      for (int t = 0; t < maps[j].count; ++t)
-        row += maps[j].coefficient[t] * H_z.middleRows<3>(3 * maps[j].z_block[t]);
-      for (int l = j; l < 2 * k; ++l)
-        for (int t = 0; t < maps[l].count; ++t)
-          H_y.block<3, 3>(3 * j, 3 * l) +=
-              maps[l].coefficient[t] * row.middleCols<3>(3 * maps[l].z_block[t]);
-    }
+    add_translation_rows(gp, k, H_z.middleRows<3>(3 * z_x_prime), H_y);
+    add_rotation_rows(gp, k, H_z, H_y);
   }
 
   // Stage 3: y ← Δ (B10–B11). Δ-blocks: translation of node I → 2I, rotation → 2I + 1.
