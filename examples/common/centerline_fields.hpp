@@ -1,7 +1,7 @@
 #pragma once
 // The point data the examples write along their beams' centerlines (ResultsLayout::
 // centerline_fields), so ParaView can colour the rods: the reference arc length from the root
-// and the velocity, both at the points of GeometricallyExactBeam::sample_centerline.
+// and the velocity, both at the points of a core::CenterlineSampler.
 #include <spar/spar.hpp>
 
 #include <vector>
@@ -17,32 +17,20 @@ inline std::vector<core::CenterlineField> centerline_field_layout() {
            .description = "velocity of the centerline point, inertial frame", .components = 3}};
 }
 
-/// Reference arc length from the root at the `points` sample parameters: the cumulative chord
-/// lengths of the sampled reference centerline (exact for a straight beam), points × 1.
-inline Eigen::MatrixXd reference_arc_length(const core::GeometricallyExactBeam& beam,
-                                            const core::Configuration& reference, int points) {
-  const Eigen::MatrixXd x0 = beam.sample_centerline(reference, points);
-  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(points, 1);
-  for (int i = 1; i < points; ++i) s(i, 0) = s(i - 1, 0) + (x0.row(i) - x0.row(i - 1)).norm();
+/// Reference arc length from the root at the sampler's points: the cumulative chord lengths of
+/// the sampled reference centerline (exact for a straight beam), points × 1.
+inline Eigen::MatrixXd reference_arc_length(const core::CenterlineSampler& points, const core::Configuration& reference) {
+  const Eigen::MatrixXd x0 = points.positions(reference);
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(points.size(), 1);
+  for (int i = 1; i < points.size(); ++i) s(i, 0) = s(i - 1, 0) + (x0.row(i) - x0.row(i - 1)).norm();
   return s;
 }
 
-/// Velocity ẋ(u) of the centerline at the `points` sample parameters, points × 3. The centerline
-/// x(u) = Σ N_I(u) x_I is linear in the node positions (003 eq. 39), so ẋ(u) = Σ N_I(u) ẋ_I is the
-/// centerline sampled with each node's ẋ (the first 3 of its 6 velocity entries) in place of x_I.
-inline Eigen::MatrixXd centerline_velocity(const core::GeometricallyExactBeam& beam, const core::Configuration& q,
-                                           const Eigen::VectorXd& velocity, int points) {
-  core::Configuration rates = q;
-  for (int I = 0; I < beam.control_point_count(); ++I)
-    rates.position[beam.node(I)] = velocity.segment<3>(q.blocks[beam.node(I)].offset);
-  return beam.sample_centerline(rates, points);
-}
-
 /// One beam's fields for ResultsStep::centerline_fields, in centerline_field_layout() order.
-inline std::vector<Eigen::MatrixXd> centerline_fields(const core::GeometricallyExactBeam& beam,
+inline std::vector<Eigen::MatrixXd> centerline_fields(const core::CenterlineSampler& points,
                                                       const Eigen::MatrixXd& arc_length, const core::Configuration& q,
                                                       const Eigen::VectorXd& velocity) {
-  return {arc_length, centerline_velocity(beam, q, velocity, static_cast<int>(arc_length.rows()))};
+  return {arc_length, points.velocities(q, velocity)};
 }
 
 }  // namespace spar::examples

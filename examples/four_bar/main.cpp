@@ -84,8 +84,9 @@ int main(int argc, char** argv) try {
   // 4. Integrate and record.
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
-  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank, initial_state, samples);
-  const Eigen::MatrixXd rocker_arc_length = examples::reference_arc_length(rocker, initial_state, samples);
+  const core::CenterlineSampler crank_points(crank, samples), rocker_points(rocker, samples);
+  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank_points, initial_state);
+  const Eigen::MatrixXd rocker_arc_length = examples::reference_arc_length(rocker_points, initial_state);
   core::ResultsWriter results(out + "/four_bar.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
@@ -175,10 +176,10 @@ int main(int argc, char** argv) try {
                         examples::energy_balance_values(energy)),
                     .probes = {q.position[mechanism.crank_tip], q.position[mechanism.rocker_tip],
                                q.position[mechanism.coupler_node], at_a.force, at_a.moment, at_d.force},
-                    .centerlines = {crank.sample_centerline(q, samples), rocker.sample_centerline(q, samples)},
+                    .centerlines = {crank_points.positions(q), rocker_points.positions(q)},
                     .centerline_fields = {
-                        examples::centerline_fields(crank, crank_arc_length, q, sample.velocity),
-                        examples::centerline_fields(rocker, rocker_arc_length, q, sample.velocity)}});
+                        examples::centerline_fields(crank_points, crank_arc_length, q, sample.velocity),
+                        examples::centerline_fields(rocker_points, rocker_arc_length, q, sample.velocity)}});
   };
   // Every step, or every output_interval through a solvers::TimeSampler.
   std::optional<solvers::TimeSampler> sampler;

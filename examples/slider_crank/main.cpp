@@ -23,6 +23,7 @@
 
 #include <centerline_fields.hpp>
 #include <cli.hpp>
+#include <csv_row.hpp>
 #include <run_counters.hpp>
 #include <energy_balance.hpp>
 
@@ -92,8 +93,9 @@ int main(int argc, char** argv) try {
   // `record_every` steps (the first and the last always).
   const long record_every = std::max(1L, std::lround(output_interval / h));
   const int samples = 10 * elements + 1;  // centerline points per rod in the results file
-  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank, initial_state, samples);
-  const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler, initial_state, samples);
+  const core::CenterlineSampler crank_points(crank, samples), coupler_points(coupler, samples);
+  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank_points, initial_state);
+  const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler_points, initial_state);
   core::ResultsWriter results(out + "/slider_crank.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
@@ -125,7 +127,6 @@ int main(int argc, char** argv) try {
   results.write_attribute("strategy", strategy);
   results.write_attribute("output_interval", static_cast<double>(record_every) * h);
   std::ofstream csv(out + "/slider_crank.csv");
-  csv.precision(15);
   csv << "t,rod2_deformation_rate,rod1_angular_speed,slider_x,rod2_mid_x,rod2_mid_y,rod2_mid_z,"
          "constraint_residual,newton_iterations,kinetic_energy,strain_energy,gravity_potential,"
       << examples::energy_balance_csv_columns << '\n';
@@ -149,12 +150,10 @@ int main(int argc, char** argv) try {
     if (!last && integrator.counters().steps % record_every != 0) return;
     const solvers::Energies energy = integrator.energies();
     const Eigen::Vector3d midpoint = coupler.position_at(q, 0.5);
-    csv << integrator.time() << ',' << rate << ',' << speed << ',' << q.position[slider].x() << ','
-        << midpoint.x() << ',' << midpoint.y() << ',' << midpoint.z() << ',' << residual << ','
-        << integrator.last_step_iterations() << ',' << energy.kinetic << ',' << energy.strain << ','
-        << energy.gravity;
-    examples::write_energy_balance_csv(csv, energy);
-    csv << '\n';
+    examples::write_csv_row(csv, {integrator.time(), rate, speed, q.position[slider].x(), midpoint.x(), midpoint.y(),
+                                  midpoint.z(), residual, static_cast<double>(integrator.last_step_iterations()),
+                                  energy.kinetic, energy.strain, energy.gravity, energy.external_work,
+                                  energy.numerical_dissipation});
     results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
                     .multipliers = &integrator.multipliers(),
                     .scalars = examples::followed_by<double>(
@@ -162,10 +161,10 @@ int main(int argc, char** argv) try {
                          static_cast<double>(integrator.last_step_iterations())},
                         examples::energy_balance_values(energy)),
                     .probes = {midpoint, q.position[crank_tip]},
-                    .centerlines = {crank.sample_centerline(q, samples), coupler.sample_centerline(q, samples)},
+                    .centerlines = {crank_points.positions(q), coupler_points.positions(q)},
                     .centerline_fields = {
-                        examples::centerline_fields(crank, crank_arc_length, q, integrator.velocity()),
-                        examples::centerline_fields(coupler, coupler_arc_length, q, integrator.velocity())}});
+                        examples::centerline_fields(crank_points, crank_arc_length, q, integrator.velocity()),
+                        examples::centerline_fields(coupler_points, coupler_arc_length, q, integrator.velocity())}});
   };
   observe(false);
   core::ProgressBar progress(t_end, "slider_crank");

@@ -104,6 +104,8 @@ int main(int argc, char** argv) try {
   // 4. Integrate, recording D and the sliders every step and the centerlines every output interval.
   std::filesystem::create_directories(out);
   const int samples = 4 * parameters.elements + 1;
+  std::vector<core::CenterlineSampler> member_points;
+  for (const examples::Member& m : unit.members) member_points.emplace_back(model.beam(m.beam), samples);
   std::vector<core::ResultsQuantity> scalars = {
       {.name = "constraint_residual", .unit = "m", .description = "largest constraint violation |Phi|_inf after the step"},
       {.name = "newton_iterations", .unit = "1", .description = "Newton iterations of the step", .integer = true}};
@@ -158,7 +160,7 @@ int main(int argc, char** argv) try {
                                       [&](double ts) { return std::abs(t - ts) < 0.5 * h; });
     if (!(last || snapshot || t >= next_output - 0.5 * h)) return;
     std::vector<Eigen::MatrixXd> lines;
-    for (const examples::Member& m : unit.members) lines.push_back(model.beam(m.beam).sample_centerline(q, samples));
+    for (const core::CenterlineSampler& points : member_points) lines.push_back(points.positions(q));
     if (last || snapshot) {
       for (std::size_t k = 0; k < lines.size(); ++k)
         for (Eigen::Index i = 0; i < lines[k].rows(); ++i)

@@ -1,4 +1,5 @@
 #include <spar/core/beam.hpp>
+#include <spar/core/centerline_sampler.hpp>
 #include <spar/core/beam_element.hpp>
 
 #include "beam_interpolation.hpp"
@@ -198,16 +199,7 @@ Eigen::Vector3d GeometricallyExactBeam::position_at(const Configuration& q, doub
 }
 
 Eigen::MatrixXd GeometricallyExactBeam::sample_centerline(const Configuration& q, int points) const {
-  if (points < 2)
-    throw Error("a centerline sample needs at least 2 points, got " + std::to_string(points),
-                "core::GeometricallyExactBeam::sample_centerline", "ask for 2 or more points");
-  const iga::KnotVector& U = centerline_.knots();
-  Eigen::MatrixXd samples(points, 3);
-  for (int i = 0; i < points; ++i) {
-    const double u = U.first() + (U.last() - U.first()) * i / (points - 1);
-    samples.row(i) = position_at(q, u).transpose();
-  }
-  return samples;
+  return CenterlineSampler(*this, points).positions(q);
 }
 
 Eigen::Matrix3d GeometricallyExactBeam::rotation_at(const Configuration& q, double u) const {

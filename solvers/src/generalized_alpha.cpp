@@ -191,6 +191,13 @@ struct GeneralizedAlpha::Implementation {
     energies_stale = true;
   }
 
+  /// The elements' energies at the current state, for energies() after a step that ended on
+  /// evaluate_constraints_and_loads.
+  void evaluate_energies() {
+    assembly.evaluate_energies(input(t));
+    energies_stale = false;
+  }
+
   bool dynamic_residual_small(double residual_scale) const {
     if (!std::isfinite(options.residual_tolerance)) return true;  // the test is off
     const double floor = detail::residual_round_off_floor(assembly.pattern().matrix(), model.state());
@@ -958,7 +965,7 @@ double GeneralizedAlpha::constraint_residual() const {
 Energies GeneralizedAlpha::energies() const {
   // The last evaluation of every step (and of initialize) is at the accepted state; when it
   // evaluated the constraints and loads only, the elements' energies are computed now.
-  if (impl_->energies_stale) impl_->evaluate(impl_->t, nullptr, 1.0);
+  if (impl_->energies_stale) impl_->evaluate_energies();
   const detail::SummedEnergies e = impl_->assembly.energies();
   Energies energies{.kinetic = e.kinetic, .strain = e.strain, .gravity = e.gravity,
                     .external_work = impl_->external_work};

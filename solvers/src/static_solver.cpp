@@ -8,8 +8,6 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <Eigen/SparseCholesky>
-
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -60,12 +58,15 @@ public:
   const Eigen::VectorXd& multipliers() const { return lambda_; }
 
   /// The number of negative eigenvalues of the tangent K on the null space of the constraints'
-  /// Jacobian B at the converged state, or -1 (see StaticReport::unstable_directions). The
-  /// iteration matrix A = [K Bᵀ; B 0] (fixed dofs: unit rows) has, by Sylvester's law of inertia
-  /// and the inertia of a saddle-point matrix (Gould 1985), those negative eigenvalues plus m,
-  /// m = rows of B; its LDLᵀ factorization gives the inertia as the signs of D. (An LU with
-  /// pivoting does not: its U's diagonal signs say nothing.) K and B first, multipliers last
-  /// (natural ordering), so the multipliers' pivots are the Schur complement −B K⁻¹ Bᵀ.
+  /// Jacobian B at the converged state, or -1 (see StaticReport::unstable_directions).
+  ///
+  /// Unconstrained: the negative pivots of K's LDLᵀ (Sylvester's law of inertia). Constrained: by
+  /// Finsler's lemma (Debreu 1952), for ρ above a threshold K + ρBᵀB is positive on the range of
+  /// Bᵀ and has on null(B) the inertia of K there, so its negative pivots are the count. ρ starts
+  /// at 100 max|K_ii| / max (BᵀB)_ii and grows tenfold until two counts agree (the count can only
+  /// fall as ρ grows). The saddle-point matrix [K Bᵀ; B 0] in natural order gave the same count
+  /// only while K itself was regular: a structure held by a joint alone has rigid modes in K, and
+  /// their pivots were zero or round-off (found when an exact zero appeared, issue 17).
   int unstable_directions() {
     if (has_moment_load(model_)) return -1;
     Eigen::VectorXd unused = Eigen::VectorXd::Zero(assembly_.size());
@@ -75,12 +76,29 @@ public:
     // The converged chart makes K symmetric at equilibrium up to the residual; a load whose
     // tangent leaves a larger non-symmetric part has no energy whose minimum could be assessed.
     if ((A - At).norm() > 1e-6 * A.norm()) return -1;
-    const SparseMatrix S = 0.5 * (A + At);
-    const Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt(S);
-    if (ldlt.info() != Eigen::Success) return -1;
-    const Eigen::VectorXd& D = ldlt.vectorD();
-    if (!D.allFinite() || (D.array() == 0.0).any()) return -1;  // singular: a critical state
-    return static_cast<int>((D.array() < 0.0).count()) - assembly_.multiplier_count();
+    const int n = assembly_.dof_count(), m = assembly_.multiplier_count();
+    const SparseMatrix K = (0.5 * (A + At)).topLeftCorner(n, n);
+    const auto negative_pivots = [](const SparseMatrix& S) {
+      const Eigen::SimplicialLDLT<SparseMatrix> ldlt(S);
+      if (ldlt.info() != Eigen::Success) return -1;
+      const Eigen::VectorXd& D = ldlt.vectorD();
+      if (!D.allFinite() || (D.array() == 0.0).any()) return -1;  // singular: a critical state
+      return static_cast<int>((D.array() < 0.0).count());
+    };
+    if (m == 0) return negative_pivots(K);
+    const SparseMatrix B = A.bottomLeftCorner(m, n);
+    const SparseMatrix BtB = SparseMatrix(B.transpose()) * B;
+    const double b_scale = BtB.diagonal().cwiseAbs().maxCoeff();
+    if (!(b_scale > 0.0)) return negative_pivots(K);
+    double rho = 100.0 * K.diagonal().cwiseAbs().maxCoeff() / b_scale;
+    int previous = negative_pivots(K + rho * BtB);
+    for (int attempt = 0; attempt < 8; ++attempt) {
+      rho *= 10.0;
+      const int count = negative_pivots(K + rho * BtB);
+      if (count == previous && count >= 0) return count;
+      previous = count;
+    }
+    return -1;
   }
   void set_multipliers(const Eigen::VectorXd& lambda) { lambda_ = lambda; }
 

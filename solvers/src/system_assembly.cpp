@@ -242,6 +242,20 @@ void SystemAssembly::evaluate_constraints_and_loads(const core::ElementInput& in
   }
 }
 
+void SystemAssembly::evaluate_energies(const core::ElementInput& in) {
+  core::ElementRequest request;
+  request.residual = false;
+  request.energy = true;
+  external_force_.setZero();
+  for (int id = 0; id < static_cast<int>(element_work_.size()); ++id) {
+    ElementWork& w = element_work_[id];
+    w.output.reset(static_cast<int>(w.dofs.size()), request);
+    model_.element(id).evaluate(in, request, w.output);
+    for (std::size_t i = 0; i < w.dofs.size(); ++i)
+      external_force_(w.dofs[i]) += w.output.external_force(static_cast<Eigen::Index>(i));
+  }
+}
+
 void SystemAssembly::freeze(const core::ElementInput& in) {
   const MatrixCoefficients all{.mass = 1.0, .damping = 1.0, .stiffness = 1.0};
   const Eigen::VectorXd no_increment = Eigen::VectorXd::Zero(dof_count_);

@@ -75,6 +75,10 @@ public:
   void evaluate_constraints_and_loads(const core::ElementInput& in, const Eigen::VectorXd& lambda,
                                       const Eigen::VectorXd& increment);
 
+  /// The elements' energies and external forces at `in` (energies(), external_force()), and
+  /// nothing else: each element is asked for its energy alone (ElementRequest::residual false).
+  void evaluate_energies(const core::ElementInput& in);
+
   /// Stores each element's rotation–rotation blocks of M, C and K at `in` (003's frozen matrix).
   void freeze(const core::ElementInput& in);
 

@@ -3,6 +3,7 @@
 // against central finite differences on random large deformations (rotations up to 3 rad).
 #include <spar/core/beam.hpp>
 #include <spar/core/beam_element.hpp>
+#include <spar/core/centerline_sampler.hpp>
 #include <spar/iga/circular_arc.hpp>
 #include <spar/iga/knot_operations.hpp>
 #include <spar/lie/lie.hpp>
@@ -291,4 +292,33 @@ TEST_CASE("sample_centerline samples the knot range evenly", "[gebt]") {
   for (int i = 0; i < 5; ++i)
     CHECK((samples.row(i).transpose() - Eigen::Vector3d(0.5 * i, 0.0, 0.0)).norm() <= 1e-15);
   CHECK_THROWS_WITH(beam.sample_centerline(reference, 1), Catch::Contains("at least 2 points"));
+}
+
+TEST_CASE("a centerline sampler gives position_at and the velocity field at its points", "[gebt]") {
+  // A curved (rational quadratic) beam in a deformed state: the sampler's rows are position_at at the evenly
+  // spaced parameters (the same sums, bit for bit), and its velocities are Σ N_I ẋ_I, the same
+  // combination of the nodes' velocities (checked against position_at of a configuration whose
+  // positions are those velocities).
+  core::Configuration reference;
+  const core::GeometricallyExactBeam beam(
+      {.centerline = iga::circular_arc(iga::CircularArc<3>{.radius = 1.0, .sweep = 1.5}), .stiffness = test::generic_stiffness()},
+      reference);
+  const core::Configuration q = deform(reference, 5);
+  const core::CenterlineSampler points(beam, 9);
+  REQUIRE(points.size() == 9);
+  Eigen::VectorXd velocity(q.dof_count());
+  for (int i = 0; i < velocity.size(); ++i) velocity(i) = std::sin(1.0 + i);
+  core::Configuration rates = q;
+  for (int I = 0; I < beam.control_point_count(); ++I)
+    rates.position[beam.node(I)] = velocity.segment<3>(q.blocks[beam.node(I)].offset);
+  const Eigen::MatrixXd x = points.positions(q), v = points.velocities(q, velocity);
+  const iga::KnotVector& U = beam.reference_centerline().knots();
+  for (int i = 0; i < 9; ++i) {
+    const double u = U.first() + (U.last() - U.first()) * i / 8;
+    CHECK(x.row(i).transpose() == beam.position_at(q, u));
+    CHECK(v.row(i).transpose() == beam.position_at(rates, u));
+  }
+  CHECK_THROWS_WITH(core::CenterlineSampler(beam, 1), Catch::Contains("at least 2 points"));
+  CHECK_THROWS_WITH(points.velocities(q, Eigen::VectorXd::Zero(3)), Catch::Contains("the velocity has 3 entries"));
+  CHECK_THROWS_WITH(points.positions(core::Configuration{}), Catch::Contains("frame nodes"));
 }

@@ -34,7 +34,8 @@ void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const Eleme
 
   // Strain energy: force and the exact stiffness along q ⊕ Δ (docs/beam.md B1–B12).
   BeamElementResult internal;
-  const BeamEvaluation what = !request.stiffness             ? BeamEvaluation::force
+  const BeamEvaluation what = !request.residual && !request.stiffness ? BeamEvaluation::energy
+                              : !request.stiffness             ? BeamEvaluation::force
                               : request.skip_rotation_blocks ? BeamEvaluation::force_and_translation_stiffness
                                                              : BeamEvaluation::force_and_stiffness;
   evaluate_beam_element(*beam_, element_, q, what, internal);

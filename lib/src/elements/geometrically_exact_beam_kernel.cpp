@@ -192,7 +192,8 @@ BeamStrains beam_strains(const GeometricallyExactBeam& beam, int e, int g, const
 
 void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Configuration& q,
                            BeamEvaluation what, BeamElementResult& result) {
-  const bool with_stiffness = (what != BeamEvaluation::force);
+  const bool with_force = (what != BeamEvaluation::energy);
+  const bool with_stiffness = with_force && (what != BeamEvaluation::force);
   const bool rotation_blocks = (what == BeamEvaluation::force_and_stiffness);
   const detail::RelativeRotations rel = detail::relative_rotations(beam, e, q);
   const int k = rel.node_count;
@@ -212,6 +213,7 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
     const Eigen::Matrix<double, 6, 6>& C = beam.constitutive()[gp.part];
     const Eigen::Matrix<double, 6, 1> stress = C * strain;  // (N, M), 003 eq. 17
     result.strain_energy += 0.5 * gp.weight * strain.dot(stress);
+    if (!with_force) continue;
 
     const Vector12 g_z = gp.weight * strain_operator_transpose_times(kin, stress.head<3>(), stress.tail<3>());
     // g_y += Lᵀ g_z for the linear map z ← y of B9: x′ = Σ N_I′ x_I, a, Θ = Σ N_I ψ_I, Θ′ = Σ N_I′ ψ_I.
@@ -246,6 +248,10 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
     add_rotation_rows(gp, k, H_z, H_y);
   }
 
+  if (!with_force) {
+    result.internal_force.resize(0);
+    return;
+  }
   // Stage 3: y ← Δ (B10–B11). Δ-blocks: translation of node I → 2I, rotation → 2I + 1.
   // ∂ψ_I/∂Δφ_I = T⁻¹(ψ_I), ∂ψ_I/∂Δφ_0 = −T⁻ᵀ(ψ_I), x and a map identically.
   std::array<Matrix3, max_beam_element_nodes> d_psi_d_own, d_psi_d_first;

@@ -112,14 +112,15 @@ public:
                                         int k) const;
   /// The centerline at `points` ≥ 2 parameters equally spaced over the knot range, one row each
   /// (what results files and plots draw).
+  /// (core::CenterlineSampler does this for many states at the cost of one.)
   Eigen::MatrixXd sample_centerline(const Configuration& q, int points) const;
+  /// Throws spar::Error naming `function` unless q holds the beam's nodes (a configuration of
+  /// another model, or an empty one, would be read out of bounds).
+  void require_nodes(const Configuration& q, const char* function) const;
 
 private:
   void build_elements(int quadrature_points);
   [[noreturn]] void missing_element(int e) const;
-  /// Throws spar::Error unless q holds the beam's nodes (a configuration of another model, or an
-  /// empty one, would be read out of bounds).
-  void require_nodes(const Configuration& q, const char* function) const;
   void compute_reference_strains(const Configuration& reference);
 
   iga::NurbsCurve<3> centerline_;

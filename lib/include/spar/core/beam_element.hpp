@@ -29,8 +29,9 @@ using ElementMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eige
 
 /// What to evaluate (deal.II-style update flags): the stiffness costs ~5× the force.
 /// `force_and_translation_stiffness` leaves the rotation–rotation blocks of the stiffness zero
-/// (003's frozen iteration matrix keeps them from t = 0) and skips the work only they need.
-enum class BeamEvaluation { force, force_and_stiffness, force_and_translation_stiffness };
+/// (003's frozen iteration matrix keeps them from t = 0) and skips the work only they need;
+/// `energy` computes the strain energy alone (internal_force left empty).
+enum class BeamEvaluation { energy, force, force_and_stiffness, force_and_translation_stiffness };
 
 /// The result of one element evaluation. Fixed capacity: no heap allocation.
 struct BeamElementResult {

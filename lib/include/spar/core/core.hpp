@@ -6,6 +6,7 @@
 #include <spar/core/ancf_beam.hpp>
 #include <spar/core/beam.hpp>
 #include <spar/core/beam_element.hpp>
+#include <spar/core/centerline_sampler.hpp>
 #include <spar/core/configuration.hpp>
 #include <spar/core/converged_chart.hpp>
 #include <spar/core/cross_section.hpp>

@@ -74,7 +74,8 @@ struct ElementOutput {
   /// (its part of −r), whose work the integrator books (docs/dynamics.md D8). Zero otherwise.
   Eigen::VectorXd external_force;
 
-  /// Sizes and zeroes what `request` asks for, for an element with n local dofs.
+  /// Sizes and zeroes what `request` asks for (and the residual always), for an element with n
+  /// local dofs.
   void reset(int n, const ElementRequest& request);
 };
 
