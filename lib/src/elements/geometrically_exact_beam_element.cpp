@@ -57,9 +57,19 @@ void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const Eleme
 
   // Inertia (003 eqs. 30–32): M v̇ + f_gyr(v), M constant, C = ∂f_gyr/∂v.
   if (!in.dynamic()) return;
+  // The element's frames are consecutive blocks: their velocities are one segment of the global
+  // vector (gathered only if a change of the model's layout has split them).
+  const Eigen::Index first = q.blocks[blocks_.front()].offset;
+  bool contiguous = true;
+  for (int I = 1; I < k; ++I) contiguous = contiguous && q.blocks[blocks_[I]].offset == first + frame_dofs * I;
   ElementVector v(n), a(n);
-  gather(q, blocks_, *in.velocity, v);
-  gather(q, blocks_, *in.acceleration, a);
+  if (contiguous) {
+    v = in.velocity->segment(first, n);
+    a = in.acceleration->segment(first, n);
+  } else {
+    gather(q, blocks_, *in.velocity, v);
+    gather(q, blocks_, *in.acceleration, a);
+  }
   if (request.residual) inertia_.add_force(v, a, out.residual);
   if (request.mass) inertia_.add_mass(out.mass);
   if (request.damping) inertia_.add_gyroscopic_tangent(v, out.damping);

@@ -19,22 +19,24 @@ FrameInertia::weighted_angular_velocities(const Eigen::Ref<const Eigen::VectorXd
   return sums;
 }
 
-// 003 eq. 32: (M v̇)_I = Σ_J m_IJ (ρA ẍ_J, ρJ Ω̇_J); docs/dynamics.md eq. D2 for f_gyr.
+// 003 eq. 32: (M v̇)_I = Σ_J m_IJ (ρA ẍ_J, ρJ Ω̇_J); docs/dynamics.md eq. D2 for f_gyr. One pass
+// over J gathers Σ_J m_IJ v̇_J (all six entries) and Σ_J m_IJ Ω_J.
 void FrameInertia::add_force(const Eigen::Ref<const Eigen::VectorXd>& velocity,
                              const Eigen::Ref<const Eigen::VectorXd>& acceleration,
                              Eigen::Ref<Eigen::VectorXd> force) const {
   const int k = frame_count();
-  const auto omega_sums = weighted_angular_velocities(velocity);
   for (int I = 0; I < k; ++I) {
-    Eigen::Vector3d linear = Eigen::Vector3d::Zero(), angular = Eigen::Vector3d::Zero();
+    Eigen::Matrix<double, 6, 1> weighted_acceleration = Eigen::Matrix<double, 6, 1>::Zero();
+    Eigen::Vector3d weighted_omega = Eigen::Vector3d::Zero();
     for (int J = 0; J < k; ++J) {
-      linear += coefficients_(I, J) * acceleration.segment<3>(6 * J);
-      angular += coefficients_(I, J) * acceleration.segment<3>(6 * J + 3);
+      const double m = coefficients_(I, J);
+      weighted_acceleration += m * acceleration.segment<6>(6 * J);
+      weighted_omega += m * velocity.segment<3>(6 * J + 3);
     }
-    const Eigen::Vector3d momentum = rotational_ * omega_sums.col(I);  // Π_I
-    force.segment<3>(6 * I) += translational_ * linear;
-    force.segment<3>(6 * I + 3) +=
-        rotational_ * angular + Eigen::Vector3d(velocity.segment<3>(6 * I + 3)).cross(momentum);
+    const Eigen::Vector3d momentum = rotational_ * weighted_omega;  // Π_I
+    force.segment<3>(6 * I) += translational_ * weighted_acceleration.head<3>();
+    force.segment<3>(6 * I + 3) += rotational_ * weighted_acceleration.tail<3>() +
+                                   Eigen::Vector3d(velocity.segment<3>(6 * I + 3)).cross(momentum);
   }
 }
 
