@@ -187,7 +187,7 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
         },
         execution_);
   } else {
-    for_each_index(total, execution_ == core::AssemblyExecution::parallel, [&](int id) {
+    for_each_index(total, pattern_->runs_parallel(execution_), [&](int id) {
       if (id < element_count)
         compute_element(id, in, nullptr, chart, increment, false, nullptr);
       else
