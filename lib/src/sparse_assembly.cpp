@@ -1,12 +1,10 @@
 #include <spar/core/sparse_assembly.hpp>
 
+#include <spar/core/work_sharing.hpp>
 #include <spar/error.hpp>
-
-#include <omp.h>
 
 #include <algorithm>
 #include <cstddef>
-#include <exception>
 #include <string>
 
 namespace spar::core {
@@ -167,9 +165,10 @@ void SparsePattern::scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd
 bool SparsePattern::runs_parallel(AssemblyExecution execution) const noexcept {
   switch (execution) {
     case AssemblyExecution::serial: return false;
-    case AssemblyExecution::parallel: return omp_get_max_threads() > 1;
+    case AssemblyExecution::parallel: return WorkSharing::shared().thread_count() > 1;
     case AssemblyExecution::automatic:
-      return block_count() >= parallel_assembly_min_blocks && omp_get_max_threads() > 1;
+      return block_count() >= parallel_assembly_min_blocks &&
+             WorkSharing::shared().thread_count() > 1;
   }
   return false;
 }
@@ -221,56 +220,40 @@ void SparsePattern::build_gather() {
   }
 }
 
-// One barrier per assembly, not one per colour of a block colouring (the scheme before): with
-// another process on a core, a descheduled thread held every colour's barrier, and runs on the
-// loaded machine took up to 30× the serial time (docs/performance.md, "Scaling"). The blocks are
-// taken in dynamic chunks so that a thread sharing its core does less of them; where each block
-// lands is fixed, so the schedule does not change the result.
+// With another process on a core, an OpenMP team (one barrier per colour of a block colouring,
+// the scheme before) waited at every barrier for its descheduled thread while the others spun:
+// the beam's assemblies took 10–40× the serial time (docs/performance.md, "Scaling"). Here the
+// blocks go to whichever thread is free (core/work_sharing.hpp), and where each block lands is
+// fixed, so the schedule does not change the result.
 void SparsePattern::assemble_parallel(const BlockCompute& compute) {
   if (gather_starts_.empty()) build_gather();
-  const int threads = omp_get_max_threads();
-  if (static_cast<int>(workspaces_.size()) < threads) workspaces_.resize(threads);
-  std::vector<std::exception_ptr> failures(threads);
-  const int values = nonzeros();
-  // Chunks: ~16 per thread balance a slowed thread; a value chunk is a few cache lines of work.
-  const int block_chunk = std::max(1, block_count() / (16 * threads));
-  const int value_chunk = std::max(1024, values / (16 * threads));
-  double* matrix_values = matrix_.valuePtr();
-
-#pragma omp parallel num_threads(threads)
-  {
-    const int thread = omp_get_thread_num();
+  WorkSharing& team = WorkSharing::shared();
+  if (static_cast<int>(workspaces_.size()) < team.thread_count())
+    workspaces_.resize(team.thread_count());
+  // Chunks of ~64 beam elements (~0.5 ms): small enough that a helper descheduled in the middle
+  // of one delays the caller little, large enough that claiming them costs nothing.
+  const int block_chunk = std::clamp(block_count() / (4 * team.thread_count()), 1, 64);
+  team.for_each_chunk(block_count(), block_chunk, [&](int begin, int end, int thread) {
     Eigen::MatrixXd& K = workspaces_[thread];
-#pragma omp for schedule(dynamic, block_chunk)
-    for (int block_id = 0; block_id < block_count(); ++block_id) {
-      if (failures[thread]) continue;
+    for (int block_id = begin; block_id < end; ++block_id) {
       const PatternBlock& block = blocks_[block_id];
-      const auto rows = static_cast<Eigen::Index>(block.rows.size());
-      const auto cols = static_cast<Eigen::Index>(block.cols.size());
-      try {
-        K.setZero(rows, cols);
-        compute(block_id, K);
-        check_block_matrix(block_id, block, K);
-        std::copy_n(K.data(), rows * cols, block_values_.data() + value_offsets_[block_id]);
-      } catch (...) {
-        failures[thread] = std::current_exception();
-      }
+      K.setZero(static_cast<Eigen::Index>(block.rows.size()),
+                static_cast<Eigen::Index>(block.cols.size()));
+      compute(block_id, K);
+      check_block_matrix(block_id, block, K);
+      std::copy_n(K.data(), K.size(), block_values_.data() + value_offsets_[block_id]);
     }
-    // The implicit barrier above is the one synchronisation point: every block is stored.
-    bool failed = false;
-    for (const std::exception_ptr& failure : failures) failed = failed || failure;
-    if (!failed) {
-#pragma omp for schedule(dynamic, value_chunk) nowait
-      for (int k = 0; k < values; ++k) {
-        double sum = 0.0;  // set_zero() then the serial additions, in their order
-        for (std::size_t s = gather_starts_[k]; s < gather_starts_[k + 1]; ++s)
-          sum += block_values_[gather_sources_[s]];
-        matrix_values[k] = sum;
-      }
+  });
+  // Every block is stored: each value is set_zero() and the serial additions, in their order.
+  double* values = matrix_.valuePtr();
+  team.for_each_chunk(nonzeros(), 16384, [&](int begin, int end, int) {
+    for (int k = begin; k < end; ++k) {
+      double sum = 0.0;
+      for (std::size_t s = gather_starts_[k]; s < gather_starts_[k + 1]; ++s)
+        sum += block_values_[gather_sources_[s]];
+      values[k] = sum;
     }
-  }
-  for (const std::exception_ptr& failure : failures)
-    if (failure) std::rethrow_exception(failure);
+  });
 }
 
 void SparsePattern::apply_dirichlet(const std::vector<int>& fixed_dofs,

@@ -1,11 +1,10 @@
 // SparsePattern: its structure and scatter against a dense matrix assembled by hand, Dirichlet
 // conditions, serial against parallel assembly, and the errors it raises.
 #include <spar/core/sparse_assembly.hpp>
+#include <spar/core/work_sharing.hpp>
 #include <spar/error.hpp>
 
 #include <catch2/catch.hpp>
-
-#include <omp.h>
 
 #include <algorithm>
 #include <random>
@@ -203,7 +202,7 @@ TEST_CASE("parallel assembly sums repeated dofs and coupling blocks as add_block
 
 TEST_CASE("automatic assembly runs in parallel from parallel_assembly_min_blocks blocks up",
           "[core][sparse_pattern][openmp]") {
-  const bool threads = omp_get_max_threads() > 1;
+  const bool threads = core::WorkSharing::shared().thread_count() > 1;
   const BeamChain below = beam_chain(core::parallel_assembly_min_blocks - 1, 0);
   const BeamChain at = beam_chain(core::parallel_assembly_min_blocks, 0);
   const SparsePattern small(below.size, below.blocks);

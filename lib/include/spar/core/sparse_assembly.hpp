@@ -43,13 +43,14 @@ struct PatternBlock {
 /// How SparsePattern::assemble runs the blocks. Every execution gives bitwise the same matrix.
 enum class AssemblyExecution {
   serial,    ///< one thread: each block computed and added in block order
-  parallel,  ///< OpenMP threads compute the blocks, then add them in block order (one barrier)
+  parallel,  ///< the caller and helper threads compute the blocks (core/work_sharing.hpp), then sum
+             ///< every value from its contributions in block order
   automatic  ///< parallel from `parallel_assembly_min_blocks` blocks up with > 1 thread, else serial
 };
 
 /// The block count from which AssemblyExecution::automatic runs in parallel. Measured on a 2-core
-/// machine with cubic beam elements (docs/performance.md, "Scaling"): below it the fork and the
-/// barrier cost more than the second thread saves.
+/// machine with cubic beam elements (docs/performance.md, "Scaling"): below it waking the helper
+/// and storing the blocks cost more than the second thread saves.
 inline constexpr int parallel_assembly_min_blocks = 200;
 
 /// Computes the dense matrix of block `block_id` into `K`, which arrives sized rows × cols of
@@ -99,20 +100,21 @@ public:
   /// Assembles the whole matrix from every block's `compute(block_id, K)`.
   ///
   /// Serial: for every block in order, computes it into one workspace K and add_block()s it.
-  /// Parallel: the OpenMP threads compute the blocks in chunks taken on demand (a thread slowed
-  /// by another process takes fewer), each into its own workspace, and copy every block into its
-  /// own slot of a block-value store; after the one barrier, the threads fill disjoint ranges of
-  /// the matrix's values, each value the sum of its contributions in block order. The sums are
-  /// those of the serial execution, in the same order, so both give bitwise identical matrices.
-  /// The store and the value-to-contribution map are built at the first parallel assembly.
+  /// Parallel: the calling thread and the helpers of WorkSharing::shared() compute the blocks in
+  /// chunks taken on demand (a thread slowed by another process takes fewer, and none is waited
+  /// for before it starts), each into its own workspace, and copy every block into its own slot
+  /// of a block-value store; once every block is stored, they fill chunks of the matrix's values,
+  /// each value the sum of its contributions in block order. The sums are those of the serial
+  /// execution, in the same order, so both give bitwise identical matrices. The store (one double
+  /// per block entry) and the value-to-contribution map are built at the first parallel assembly.
   ///
   /// An exception thrown by `compute` (or a K it resized) is rethrown on the calling thread once
   /// every thread has finished; the values are then incomplete.
   void assemble(const BlockCompute& compute,
                 AssemblyExecution execution = AssemblyExecution::automatic);
 
-  /// True when `execution` runs on more than one OpenMP thread for this pattern (`automatic`
-  /// resolved by the block count and omp_get_max_threads()).
+  /// True when `execution` runs on more than one thread for this pattern (`automatic` resolved by
+  /// the block count and WorkSharing::shared().thread_count(), i.e. OMP_NUM_THREADS).
   bool runs_parallel(AssemblyExecution execution) const noexcept;
 
   /// Imposes homogeneous Dirichlet conditions (zero increments) on `fixed_dofs`: zeroes their rows
@@ -138,7 +140,7 @@ private:
   std::vector<std::size_t> block_offsets_;
   /// The value index of every diagonal entry.
   std::vector<int> diagonal_positions_;
-  /// One dense workspace per OpenMP thread, reused across assemblies.
+  /// One dense workspace per thread of the team, reused across assemblies.
   std::vector<Eigen::MatrixXd> workspaces_;
   /// Parallel assembly: block b's dense matrix (column-major) at block_values_[value_offsets_[b]].
   std::vector<double> block_values_;

@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// Work sharing that never waits for a thread that has not started: the loop over elements of an
+/// assembly, split into chunks that the calling thread and sleeping helper threads take on
+/// demand.
+///
+/// Why not an OpenMP parallel loop: its team ends at a barrier that every thread of the team must
+/// reach, and its idle threads spin. With another process on one of two cores, a team thread
+/// waits to be scheduled while the others spin at the barrier; the flexible beam's assemblies ran
+/// 10–40× slower than serial that way (docs/performance.md, "Scaling"). Here the caller works
+/// through the chunks itself; a helper that wakes late finds none left and sleeps again, and the
+/// caller waits only for chunks a helper has taken and is running. Helpers sleep on a futex
+/// (std::atomic::wait) between jobs and never spin.
+
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace spar::core {
+
+/// Runs body(begin, end, thread) over consecutive chunks of [0, count): `thread` is 0 for the
+/// calling thread and 1 … thread_count() − 1 for the helpers, so per-thread workspaces indexed by
+/// it are never shared. Which thread runs which chunk depends on the machine's load; a result
+/// that must be reproducible may depend on the chunk only, never on `thread`.
+class WorkSharing {
+public:
+  using Body = std::function<void(int begin, int end, int thread)>;
+
+  /// The process-wide instance with omp_get_max_threads() threads (OMP_NUM_THREADS) at first use.
+  static WorkSharing& shared();
+
+  /// A team of `threads` (≥ 1): the caller and threads − 1 helpers, started at once.
+  explicit WorkSharing(int threads);
+  ~WorkSharing();
+  WorkSharing(const WorkSharing&) = delete;
+  WorkSharing& operator=(const WorkSharing&) = delete;
+
+  /// The caller plus the helpers.
+  int thread_count() const noexcept { return static_cast<int>(helpers_.size()) + 1; }
+
+  /// Runs body over [0, count) in chunks of `chunk` indices (the last one shorter) and returns
+  /// when every chunk has run. If the team is busy with another caller's job, the caller runs
+  /// them all itself. The first exception thrown by body is rethrown here once every running
+  /// chunk has finished; chunks not yet started are then skipped.
+  void for_each_chunk(int count, int chunk, const Body& body);
+
+private:
+  /// Claims a chunk of job `generation`: its index, or −1 when none is left or the job is over.
+  /// The generation and the count of unclaimed chunks share one atomic word (chunks are taken
+  /// from the last down), so a helper that wakes late can never take a chunk of a later job.
+  int claim(std::uint32_t generation);
+  void run_chunk(int index, int thread);
+  void helper_loop(int thread);
+
+  std::vector<std::thread> helpers_;
+  std::atomic<bool> busy_{false};  ///< set while a caller runs a job on the team
+  /// High 32 bits: the job's generation; low 32 bits: its number of unclaimed chunks.
+  std::atomic<std::uint64_t> job_{0};
+  std::atomic<std::uint32_t> generation_{0};  ///< what helpers wait on (futex)
+  std::atomic<int> finished_{0};              ///< chunks of the current job run to the end
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> failed_{false};
+  // The current job; written by the caller before generation_ is published.
+  const Body* body_ = nullptr;
+  int count_ = 0, chunk_ = 1, chunks_ = 0;
+  std::mutex failure_mutex_;
+  std::exception_ptr failure_;
+};
+
+}  // namespace spar::core

@@ -1,0 +1,116 @@
+#include <spar/core/work_sharing.hpp>
+
+#include <spar/error.hpp>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <string>
+
+namespace spar::core {
+
+namespace {
+
+constexpr std::uint64_t unclaimed_mask = 0xFFFFFFFFu;
+
+std::uint64_t job_word(std::uint32_t generation, int unclaimed) {
+  return (std::uint64_t{generation} << 32) | static_cast<std::uint32_t>(unclaimed);
+}
+
+}  // namespace
+
+WorkSharing& WorkSharing::shared() {
+  static WorkSharing team(omp_get_max_threads());
+  return team;
+}
+
+WorkSharing::WorkSharing(int threads) {
+  if (threads < 1)
+    throw Error("a team of " + std::to_string(threads) + " threads", "core::WorkSharing",
+                "give at least 1 thread (the caller)");
+  helpers_.reserve(static_cast<std::size_t>(threads - 1));
+  for (int thread = 1; thread < threads; ++thread)
+    helpers_.emplace_back([this, thread] { helper_loop(thread); });
+}
+
+WorkSharing::~WorkSharing() {
+  stop_.store(true);
+  generation_.fetch_add(1, std::memory_order_release);
+  generation_.notify_all();
+  for (std::thread& helper : helpers_) helper.join();
+}
+
+int WorkSharing::claim(std::uint32_t generation) {
+  std::uint64_t word = job_.load(std::memory_order_acquire);
+  for (;;) {
+    const auto unclaimed = static_cast<int>(word & unclaimed_mask);
+    if ((word >> 32) != generation || unclaimed == 0) return -1;
+    if (job_.compare_exchange_weak(word, word - 1, std::memory_order_acq_rel,
+                                   std::memory_order_acquire))
+      return unclaimed - 1;
+  }
+}
+
+void WorkSharing::run_chunk(int index, int thread) {
+  // This chunk is claimed and not finished, so the caller is still waiting in this job: its
+  // fields are this job's until finished_ counts the chunk.
+  const int chunks = chunks_;
+  if (!failed_.load(std::memory_order_relaxed)) {
+    const int begin = index * chunk_;
+    try {
+      (*body_)(begin, std::min(count_, begin + chunk_), thread);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failure_mutex_);
+      if (!failure_) failure_ = std::current_exception();
+      failed_.store(true, std::memory_order_relaxed);
+    }
+  }
+  if (finished_.fetch_add(1, std::memory_order_acq_rel) + 1 == chunks) finished_.notify_one();
+}
+
+void WorkSharing::helper_loop(int thread) {
+  std::uint32_t seen = 0;
+  for (;;) {
+    generation_.wait(seen, std::memory_order_acquire);
+    if (stop_.load()) return;
+    seen = generation_.load(std::memory_order_acquire);
+    for (int index; (index = claim(seen)) >= 0;) run_chunk(index, thread);
+  }
+}
+
+void WorkSharing::for_each_chunk(int count, int chunk, const Body& body) {
+  if (chunk < 1)
+    throw Error("chunk size " + std::to_string(chunk), "core::WorkSharing::for_each_chunk",
+                "give chunks of at least 1 index");
+  if (count <= 0) return;
+  // A team busy with another job (another thread's, or the body calling back in) is not shared.
+  if (helpers_.empty() || busy_.exchange(true, std::memory_order_acquire)) {
+    for (int begin = 0; begin < count; begin += chunk) body(begin, std::min(count, begin + chunk), 0);
+    return;
+  }
+  struct Release {
+    std::atomic<bool>& busy;
+    ~Release() { busy.store(false, std::memory_order_release); }
+  } release{busy_};
+
+  body_ = &body;
+  count_ = count;
+  chunk_ = chunk;
+  chunks_ = static_cast<int>((static_cast<long long>(count) + chunk - 1) / chunk);
+  finished_.store(0, std::memory_order_relaxed);
+  failed_.store(false, std::memory_order_relaxed);
+  failure_ = nullptr;
+  const std::uint32_t generation = generation_.load(std::memory_order_relaxed) + 1;
+  job_.store(job_word(generation, chunks_), std::memory_order_release);
+  generation_.store(generation, std::memory_order_release);
+  generation_.notify_all();
+
+  for (int index; (index = claim(generation)) >= 0;) run_chunk(index, 0);
+  // Only chunks that a helper has claimed and is running are left to wait for.
+  for (int finished; (finished = finished_.load(std::memory_order_acquire)) != chunks_;)
+    finished_.wait(finished, std::memory_order_acquire);
+  body_ = nullptr;
+  if (failure_) std::rethrow_exception(failure_);
+}
+
+}  // namespace spar::core
