@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <string>
 
 namespace spar::core {
@@ -198,6 +199,10 @@ void SparsePattern::build_gather() {
   value_offsets_.assign(blocks_.size() + 1, 0);
   for (int b = 0; b < block_count(); ++b)
     value_offsets_[b + 1] = value_offsets_[b] + blocks_[b].rows.size() * blocks_[b].cols.size();
+  if (value_offsets_.back() > std::numeric_limits<std::uint32_t>::max())
+    throw Error("the blocks hold " + std::to_string(value_offsets_.back()) +
+                    " entries, more than a parallel assembly indexes (2^32)",
+                "core::SparsePattern::assemble", "assemble serially (AssemblyExecution::serial)");
   block_values_.assign(value_offsets_.back(), 0.0);
 
   // 2. For every matrix value, its contributions in the order scatter() adds them: blocks in
@@ -215,7 +220,7 @@ void SparsePattern::build_gather() {
     const std::size_t parts = blocks_[b].with_transpose ? 2 : 1;
     for (std::size_t s = 0; s < parts * entries; ++s) {
       const int position = positions_[block_offsets_[b] + s];
-      gather_sources_[next[position]++] = value_offsets_[b] + s % entries;
+      gather_sources_[next[position]++] = static_cast<std::uint32_t>(value_offsets_[b] + s % entries);
     }
   }
 }

@@ -15,6 +15,7 @@
 #include <Eigen/SparseCore>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -105,8 +106,9 @@ public:
   /// for before it starts), each into its own workspace, and copy every block into its own slot
   /// of a block-value store; once every block is stored, they fill chunks of the matrix's values,
   /// each value the sum of its contributions in block order. The sums are those of the serial
-  /// execution, in the same order, so both give bitwise identical matrices. The store (one double
-  /// per block entry) and the value-to-contribution map are built at the first parallel assembly.
+  /// execution, in the same order, so both give bitwise identical matrices. The store and the
+  /// value-to-contribution map (a double and a 32-bit index per block entry) are built at the
+  /// first parallel assembly.
   ///
   /// An exception thrown by `compute` (or a K it resized) is rethrown on the calling thread once
   /// every thread has finished; the values are then incomplete.
@@ -148,7 +150,7 @@ private:
   /// Parallel assembly: value k of the matrix is the sum of block_values_[gather_sources_[s]] for
   /// s in [gather_starts_[k], gather_starts_[k+1]), in the order add_block() adds them.
   std::vector<std::size_t> gather_starts_;
-  std::vector<std::size_t> gather_sources_;
+  std::vector<std::uint32_t> gather_sources_;
 };
 
 }  // namespace spar::core
