@@ -1,7 +1,9 @@
 // Scaling with the element count (issue 17): a cantilevered cubic beam of 10, 100, 1 000 and
 // 10 000 elements, 100 dynamic steps with the results written at every step, serial and parallel
 // assembly. Reports the time per step and per element and Newton iteration; docs/performance.md,
-// "Scaling", fits the exponent and lists the peak memory (scripts/scaling.sh).
+// "Scaling", fits the exponent and lists the peak memory (scripts/scaling.sh). `assembly` times
+// the assembly alone (every element's K, C, M into the sparse pattern), the part that runs in
+// parallel.
 //
 //   build/release/bench/bench_scaling --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/release/bench/bench_scaling --benchmark_filter='cantilever/elements:1000/'
@@ -13,6 +15,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -85,6 +88,43 @@ BENCHMARK(cantilever)
     ->ArgsProduct({{10, 100, 1000, 10000}, {0, 1}})
     ->ArgNames({"elements", "parallel"})
     ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+/// One assembly of c_K K + c_C C + c_M M of every element of the cantilever at rest (element
+/// kernels, combination and scatter), as the integrator's Newton iteration runs it.
+void assembly(benchmark::State& state) {
+  const int elements = static_cast<int>(state.range(0));
+  const auto execution = state.range(1) ? core::AssemblyExecution::parallel : core::AssemblyExecution::serial;
+  Cantilever cantilever(elements);
+  const core::Model& model = cantilever.model;
+  const core::Configuration& q = model.state();
+  const Eigen::VectorXd velocity = Eigen::VectorXd::Zero(model.dof_count());
+  const core::ElementInput in{.q = &q, .velocity = &velocity, .acceleration = &velocity,
+                              .gravity = model.gravity()};
+  const core::ElementRequest request{.stiffness = true, .damping = true, .mass = true};
+  std::vector<core::PatternBlock> blocks;
+  for (int e = 0; e < model.element_count(); ++e)
+    blocks.push_back(core::PatternBlock::element(core::block_dofs(q, model.element(e).blocks())));
+  core::SparsePattern pattern(model.dof_count(), blocks);
+  std::vector<core::ElementOutput> outputs(static_cast<std::size_t>(model.element_count()));
+  const core::BlockCompute compute = [&](int e, Eigen::MatrixXd& K) {
+    core::ElementOutput& out = outputs[static_cast<std::size_t>(e)];
+    out.reset(static_cast<int>(K.rows()), request);
+    model.element(e).evaluate(in, request, out);
+    K.noalias() = out.stiffness + 2e3 * out.damping + 4e6 * out.mass;
+  };
+  for (auto _ : state) {
+    pattern.assemble(compute, execution);
+    benchmark::DoNotOptimize(pattern.matrix().valuePtr());
+  }
+  state.counters["us_per_element"] = benchmark::Counter(
+      static_cast<double>(elements) / 1e6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.SetLabel(state.range(1) ? "parallel" : "serial");
+}
+BENCHMARK(assembly)
+    ->ArgsProduct({{10, 100, 200, 1000, 10000}, {0, 1}})
+    ->ArgNames({"elements", "parallel"})
+    ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 
 }  // namespace

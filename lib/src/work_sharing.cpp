@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 namespace spar::core {
@@ -78,20 +79,42 @@ void WorkSharing::helper_loop(int thread) {
   }
 }
 
+// On an idle machine the caller waits at most about one chunk (≤ 1/8 of the job with the
+// assembly's chunks) at the end. Far longer means a helper lost its core in the middle of a chunk
+// to another process; while that goes on, sharing costs more than it saves, so the next jobs run
+// on the caller alone: 1, 2, 4, … 64 of them after consecutive late jobs, none after a good one.
+void WorkSharing::adapt(std::chrono::steady_clock::duration worked,
+                        std::chrono::steady_clock::duration waited) {
+  if (waited > worked / 4 && waited > std::chrono::microseconds(50)) {
+    backoff_ = std::min(2 * backoff_ + 1, 64);
+    inline_jobs_ = backoff_;
+  } else {
+    backoff_ = 0;
+  }
+}
+
 void WorkSharing::for_each_chunk(int count, int chunk, const Body& body) {
   if (chunk < 1)
     throw Error("chunk size " + std::to_string(chunk), "core::WorkSharing::for_each_chunk",
                 "give chunks of at least 1 index");
   if (count <= 0) return;
+  const auto run_inline = [&] {
+    for (int begin = 0; begin < count; begin += chunk) body(begin, std::min(count, begin + chunk), 0);
+  };
   // A team busy with another job (another thread's, or the body calling back in) is not shared.
   if (helpers_.empty() || busy_.exchange(true, std::memory_order_acquire)) {
-    for (int begin = 0; begin < count; begin += chunk) body(begin, std::min(count, begin + chunk), 0);
+    run_inline();
     return;
   }
   struct Release {
     std::atomic<bool>& busy;
     ~Release() { busy.store(false, std::memory_order_release); }
   } release{busy_};
+  if (inline_jobs_ > 0) {
+    --inline_jobs_;
+    run_inline();
+    return;
+  }
 
   body_ = &body;
   count_ = count;
@@ -105,10 +128,13 @@ void WorkSharing::for_each_chunk(int count, int chunk, const Body& body) {
   generation_.store(generation, std::memory_order_release);
   generation_.notify_all();
 
+  const auto start = std::chrono::steady_clock::now();
   for (int index; (index = claim(generation)) >= 0;) run_chunk(index, 0);
+  const auto own_done = std::chrono::steady_clock::now();
   // Only chunks that a helper has claimed and is running are left to wait for.
   for (int finished; (finished = finished_.load(std::memory_order_acquire)) != chunks_;)
     finished_.wait(finished, std::memory_order_acquire);
+  adapt(own_done - start, std::chrono::steady_clock::now() - own_done);
   body_ = nullptr;
   if (failure_) std::rethrow_exception(failure_);
 }

@@ -13,6 +13,7 @@
 /// (std::atomic::wait) between jobs and never spin.
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <exception>
 #include <functional>
@@ -43,9 +44,12 @@ public:
   int thread_count() const noexcept { return static_cast<int>(helpers_.size()) + 1; }
 
   /// Runs body over [0, count) in chunks of `chunk` indices (the last one shorter) and returns
-  /// when every chunk has run. If the team is busy with another caller's job, the caller runs
-  /// them all itself. The first exception thrown by body is rethrown here once every running
-  /// chunk has finished; chunks not yet started are then skipped.
+  /// when every chunk has run. The caller runs them all itself (as thread 0) when the team is
+  /// busy with another caller's job, and for a few jobs after one in which it waited long for a
+  /// helper (a helper that lost its core to another process in the middle of a chunk: the
+  /// loaded machine, where sharing costs more than it saves). The first exception thrown by body
+  /// is rethrown here once every running chunk has finished; chunks not yet started are then
+  /// skipped.
   void for_each_chunk(int count, int chunk, const Body& body);
 
 private:
@@ -55,6 +59,9 @@ private:
   int claim(std::uint32_t generation);
   void run_chunk(int index, int thread);
   void helper_loop(int thread);
+  /// After a shared job: how long the caller ran chunks and then waited for the helpers decides
+  /// how many of the next jobs it runs alone.
+  void adapt(std::chrono::steady_clock::duration worked, std::chrono::steady_clock::duration waited);
 
   std::vector<std::thread> helpers_;
   std::atomic<bool> busy_{false};  ///< set while a caller runs a job on the team
@@ -67,6 +74,7 @@ private:
   // The current job; written by the caller before generation_ is published.
   const Body* body_ = nullptr;
   int count_ = 0, chunk_ = 1, chunks_ = 0;
+  int inline_jobs_ = 0, backoff_ = 0;  ///< the caller's (under busy_): jobs to run alone
   std::mutex failure_mutex_;
   std::exception_ptr failure_;
 };
