@@ -42,12 +42,13 @@ for n in (10, 100, 1000, 10000):
     s, q = rows[n, 0], rows[n, 1]
     print(f"| {n} | {s['it']:.2f} | {s['ms']:.3g} | {q['ms']:.3g} | {s['ms'] / q['ms']:.2f} | "
           f"{s['us']:.3g} | {q['us']:.3g} | {s['rss']:.0f} | {q['rss']:.0f} |")
+for row in rows.values(): row["ms_per_iteration"] = row["ms"] / row["it"]
 def slope(key, p):
     xs = [math.log(n) for n in (100, 1000, 10000)]
     ys = [math.log(rows[n, p][key]) for n in (100, 1000, 10000)]
     mx, my = sum(xs) / 3, sum(ys) / 3
     return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
 for p, label in ((0, "serial"), (1, "parallel")):
-    print(f"{label}: time per step ~ N^{slope('ms', p):.3f}, peak memory ~ N^{slope('rss', p):.3f} (N = 100 … 10 000), "
+    print(f"{label}: time per step ~ N^{slope('ms', p):.3f}, per Newton iteration ~ N^{slope('ms_per_iteration', p):.3f}, peak memory ~ N^{slope('rss', p):.3f} (N = 100 … 10 000), "
           f"{(rows[10000, p]['rss'] - rows[1000, p]['rss']) * 1024 / 9000:.1f} KB per element from 1 000 to 10 000")
 PY
