@@ -4,15 +4,13 @@
 #include <spar/core/work_sharing.hpp>
 #include <spar/error.hpp>
 
-#include <algorithm>
-
 namespace spar::solvers::detail {
 
 namespace {
 
 /// Calls body(i) for i in [0, count): in order on this thread, or when `parallel` in chunks on
 /// the shared team (core/work_sharing.hpp), whose first exception is rethrown here once every
-/// running chunk has finished. Chunks as in SparsePattern::assemble.
+/// running chunk has finished.
 template <class Body>
 void for_each_index(int count, bool parallel, const Body& body) {
   if (!parallel) {
@@ -20,7 +18,7 @@ void for_each_index(int count, bool parallel, const Body& body) {
     return;
   }
   core::WorkSharing& team = core::WorkSharing::shared();
-  team.for_each_chunk(count, std::clamp(count / (4 * team.thread_count()), 1, 64),
+  team.for_each_chunk(count, team.chunk_for(count, 64),
                       [&](int begin, int end, int) {
                         for (int i = begin; i < end; ++i) body(i);
                       });

@@ -13,6 +13,7 @@
 /// for the next one for 50 µs (an assembly is two jobs in a row), then sleeps on a futex
 /// (std::atomic::wait).
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -43,6 +44,13 @@ public:
 
   /// The caller plus the helpers.
   int thread_count() const noexcept { return static_cast<int>(helpers_.size()) + 1; }
+
+  /// A chunk size for `count` indices of similar cost: four chunks per thread, so that a thread
+  /// slowed by another process takes fewer, but at most `largest` indices, so that the wait for
+  /// a helper descheduled in the middle of one is short.
+  int chunk_for(int count, int largest) const noexcept {
+    return std::clamp(count / (4 * thread_count()), 1, std::max(largest, 1));
+  }
 
   /// Runs body over [0, count) in chunks of `chunk` indices (the last one shorter) and returns
   /// when every chunk has run. The caller runs them all itself (as thread 0) when the team is
