@@ -220,16 +220,17 @@ void SparsePattern::build_gather() {
     const std::size_t parts = blocks_[b].with_transpose ? 2 : 1;
     for (std::size_t s = 0; s < parts * entries; ++s) {
       const int position = positions_[block_offsets_[b] + s];
-      gather_sources_[next[position]++] = static_cast<std::uint32_t>(value_offsets_[b] + s % entries);
+      gather_sources_[next[position]++] =
+          static_cast<std::uint32_t>(value_offsets_[b] + s % entries);
     }
   }
 }
 
 // With another process on a core, an OpenMP team (one barrier per colour of a block colouring,
 // the scheme before) waited at every barrier for its descheduled thread while the others spun:
-// the beam's assemblies took 10–40× the serial time (docs/performance.md, "Scaling"). Here the
-// blocks go to whichever thread is free (core/work_sharing.hpp), and where each block lands is
-// fixed, so the schedule does not change the result.
+// runs of a cantilevered beam took up to 12× the serial time (docs/performance.md, "Scaling").
+// Here the blocks go to whichever thread is free (core/work_sharing.hpp), and where each block
+// lands is fixed, so the schedule does not change the result.
 void SparsePattern::assemble_parallel(const BlockCompute& compute) {
   if (gather_starts_.empty()) build_gather();
   WorkSharing& team = WorkSharing::shared();

@@ -6,12 +6,12 @@
 ///
 /// Why not an OpenMP parallel loop: its team ends at a barrier that every thread of the team must
 /// reach, and its idle threads spin. With another process on one of two cores, a team thread
-/// waits to be scheduled while the others spin at the barrier; the flexible beam's assemblies ran
-/// 10–40× slower than serial that way (docs/performance.md, "Scaling"). Here the caller works
-/// through the chunks itself; a helper that wakes late finds none left and sleeps again, and the
-/// caller waits only for chunks a helper has taken and is running. Between jobs a helper watches
-/// for the next one for 50 µs (an assembly is two jobs in a row), then sleeps on a futex
-/// (std::atomic::wait).
+/// waits to be scheduled while the others spin at the barrier; runs of a cantilevered beam took
+/// up to 12× the serial time that way, 70× with one barrier per assembly (docs/performance.md,
+/// "Scaling"). Here the caller works through the chunks itself; a helper that wakes late finds
+/// none left and sleeps again, and the caller waits only for chunks a helper has taken and is
+/// running. Between jobs a helper watches for the next one for 50 µs (an assembly is two jobs in
+/// a row), then sleeps on a futex (std::atomic::wait).
 
 #include <algorithm>
 #include <atomic>
