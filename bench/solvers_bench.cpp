@@ -141,7 +141,8 @@ BENCHMARK_CAPTURE(assemble, parallel, spar::core::AssemblyExecution::parallel)
     ->UseRealTime();
 
 void scatter_only(benchmark::State& state, spar::core::AssemblyExecution execution) {
-  // The assembly overhead alone (colour barriers, scatter): the block is a constant.
+  // The assembly overhead alone (scatter; in parallel the block store and the gather): the
+  // block is a constant.
   const BeamSystem system = beam_system(200);
   spar::core::SparsePattern pattern(system.size, system.blocks);
   const spar::core::BlockCompute compute = [](int, Eigen::MatrixXd& K) { K.setConstant(1.0); };

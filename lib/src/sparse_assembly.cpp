@@ -1,11 +1,11 @@
 #include <spar/core/sparse_assembly.hpp>
 
+#include <spar/core/work_sharing.hpp>
 #include <spar/error.hpp>
 
-#include <omp.h>
-
 #include <algorithm>
-#include <exception>
+#include <cstddef>
+#include <limits>
 #include <string>
 
 namespace spar::core {
@@ -29,13 +29,16 @@ int value_position(const SparseMatrix& A, int row, int col) {
   return static_cast<int>(std::lower_bound(begin, end, row) - A.innerIndexPtr());
 }
 
-/// The dofs a block touches (rows ∪ cols), sorted and unique.
-std::vector<int> touched_dofs(const PatternBlock& block) {
-  std::vector<int> dofs = block.rows;
-  dofs.insert(dofs.end(), block.cols.begin(), block.cols.end());
-  std::sort(dofs.begin(), dofs.end());
-  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-  return dofs;
+/// Throws spar::Error unless K is rows × cols of `block`.
+void check_block_matrix(int block_id, const PatternBlock& block,
+                        const Eigen::Ref<const Eigen::MatrixXd>& K) {
+  const auto rows = static_cast<Eigen::Index>(block.rows.size());
+  const auto cols = static_cast<Eigen::Index>(block.cols.size());
+  if (K.rows() != rows || K.cols() != cols)
+    throw Error("the matrix of block " + std::to_string(block_id) + " is " +
+                    std::to_string(K.rows()) + " × " + std::to_string(K.cols()) +
+                    ", the block is " + std::to_string(rows) + " × " + std::to_string(cols),
+                "core::SparsePattern::add_block", "size it rows × cols of the block");
 }
 
 }  // namespace
@@ -106,42 +109,6 @@ SparsePattern::SparsePattern(int size, const std::vector<PatternBlock>& blocks) 
   }
   diagonal_positions_.resize(size);
   for (int c = 0; c < size; ++c) diagonal_positions_[c] = value_position(matrix_, c, c);
-
-  colour_blocks();
-}
-
-void SparsePattern::colour_blocks() {
-  // Greedy colouring in block order: a block takes the smallest colour that no earlier block
-  // sharing one of its dofs has.
-  const int size = this->size();
-  std::vector<std::vector<int>> dof_blocks(size);
-  std::vector<std::vector<int>> block_dofs(blocks_.size());
-  for (int b = 0; b < block_count(); ++b) {
-    block_dofs[b] = touched_dofs(blocks_[b]);
-    for (int dof : block_dofs[b]) dof_blocks[dof].push_back(b);
-  }
-  std::vector<int> colour(blocks_.size(), -1);
-  std::vector<int> forbidden_by;  // forbidden_by[c] == b: colour c is taken by a neighbour of b
-  int colours = 0;
-  for (int b = 0; b < block_count(); ++b) {
-    for (int dof : block_dofs[b])
-      for (int neighbour : dof_blocks[dof])
-        if (colour[neighbour] >= 0) forbidden_by[colour[neighbour]] = b;
-    int c = 0;
-    while (c < colours && forbidden_by[c] == b) ++c;
-    if (c == colours) {
-      ++colours;
-      forbidden_by.push_back(-1);
-    }
-    colour[b] = c;
-  }
-
-  colour_starts_.assign(colours + 1, 0);
-  for (int c : colour) ++colour_starts_[c + 1];
-  for (int c = 0; c < colours; ++c) colour_starts_[c + 1] += colour_starts_[c];
-  colour_order_.resize(blocks_.size());
-  std::vector<int> next(colour_starts_.begin(), colour_starts_.end() - 1);
-  for (int b = 0; b < block_count(); ++b) colour_order_[next[colour[b]]++] = b;
 }
 
 void SparsePattern::set_zero() noexcept {
@@ -184,11 +151,7 @@ void SparsePattern::scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd
   const PatternBlock& block = blocks_[block_id];
   const Eigen::Index rows = static_cast<Eigen::Index>(block.rows.size());
   const Eigen::Index cols = static_cast<Eigen::Index>(block.cols.size());
-  if (K.rows() != rows || K.cols() != cols)
-    throw Error("the matrix of block " + std::to_string(block_id) + " is " +
-                    std::to_string(K.rows()) + " × " + std::to_string(K.cols()) +
-                    ", the block is " + std::to_string(rows) + " × " + std::to_string(cols),
-                "core::SparsePattern::add_block", "size it rows × cols of the block");
+  check_block_matrix(block_id, block, K);
   double* values = matrix_.valuePtr();
   const int* position = positions_.data() + block_offsets_[block_id];
   for (Eigen::Index j = 0; j < cols; ++j)
@@ -200,41 +163,102 @@ void SparsePattern::scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd
       values[*position++] += transpose_of_K ? K(i, j) : K_transpose_position(j, i);
 }
 
-// Colouring rather than `omp atomic` adds: measured with bench_solvers (200 blocks of 24 × 24,
-// 2 threads), the scatter alone took 79 µs coloured against 210 µs with atomics (137 µs serial);
-// with a beam-like element kernel both assemble in ~0.7 ms (1.05 ms serial). Colouring also
-// makes the sums' order fixed, so a parallel run reproduces the serial one bit for bit.
-void SparsePattern::assemble(const BlockCompute& compute, AssemblyExecution execution) {
-  set_zero();
-  const bool parallel = execution == AssemblyExecution::parallel;
-  const int threads = parallel ? omp_get_max_threads() : 1;
-  if (static_cast<int>(workspaces_.size()) < threads) workspaces_.resize(threads);
-  std::vector<std::exception_ptr> failures(threads);
+bool SparsePattern::runs_parallel(AssemblyExecution execution) const noexcept {
+  switch (execution) {
+    case AssemblyExecution::serial: return false;
+    case AssemblyExecution::parallel: return WorkSharing::shared().thread_count() > 1;
+    case AssemblyExecution::automatic:
+      return block_count() >= parallel_assembly_min_blocks &&
+             WorkSharing::shared().thread_count() > 1;
+  }
+  return false;
+}
 
-#pragma omp parallel num_threads(threads) if (parallel)
-  {
-    const int thread = omp_get_thread_num();
-    Eigen::MatrixXd& K = workspaces_[thread];
-    for (int colour = 0; colour < colour_count(); ++colour) {
-      // The implicit barrier at the end of the loop separates the colours.
-#pragma omp for schedule(static)
-      for (int k = colour_starts_[colour]; k < colour_starts_[colour + 1]; ++k) {
-        if (failures[thread]) continue;
-        const int block_id = colour_order_[k];
-        const PatternBlock& block = blocks_[block_id];
-        try {
-          K.setZero(static_cast<Eigen::Index>(block.rows.size()),
-                    static_cast<Eigen::Index>(block.cols.size()));
-          compute(block_id, K);
-          scatter(block_id, K, K, true);
-        } catch (...) {
-          failures[thread] = std::current_exception();
-        }
-      }
+void SparsePattern::assemble(const BlockCompute& compute, AssemblyExecution execution) {
+  if (runs_parallel(execution))
+    assemble_parallel(compute);
+  else
+    assemble_serial(compute);
+}
+
+void SparsePattern::assemble_serial(const BlockCompute& compute) {
+  set_zero();
+  if (workspaces_.empty()) workspaces_.resize(1);
+  Eigen::MatrixXd& K = workspaces_.front();
+  for (int block_id = 0; block_id < block_count(); ++block_id) {
+    const PatternBlock& block = blocks_[block_id];
+    K.setZero(static_cast<Eigen::Index>(block.rows.size()),
+              static_cast<Eigen::Index>(block.cols.size()));
+    compute(block_id, K);
+    scatter(block_id, K, K, true);
+  }
+}
+
+void SparsePattern::build_gather() {
+  // 1. Every block's slot in the block-value store: its rows × cols entries, column-major.
+  value_offsets_.assign(blocks_.size() + 1, 0);
+  for (int b = 0; b < block_count(); ++b)
+    value_offsets_[b + 1] = value_offsets_[b] + blocks_[b].rows.size() * blocks_[b].cols.size();
+  if (value_offsets_.back() > std::numeric_limits<std::uint32_t>::max())
+    throw Error("the blocks hold " + std::to_string(value_offsets_.back()) +
+                    " entries, more than a parallel assembly indexes (2^32)",
+                "core::SparsePattern::assemble", "assemble serially (AssemblyExecution::serial)");
+  block_values_.assign(value_offsets_.back(), 0.0);
+
+  // 2. For every matrix value, its contributions in the order scatter() adds them: blocks in
+  //    order; within a block, the entries (i, j) column by column, then for a coupling block the
+  //    transpose positions in the same order. A counting sort keeps that order within a value.
+  //    positions_ lists exactly these, block after block, so its index s is the order.
+  const std::size_t values = static_cast<std::size_t>(nonzeros());
+  gather_starts_.assign(values + 1, 0);
+  for (int position : positions_) ++gather_starts_[static_cast<std::size_t>(position) + 1];
+  for (std::size_t k = 0; k < values; ++k) gather_starts_[k + 1] += gather_starts_[k];
+  gather_sources_.resize(positions_.size());
+  std::vector<std::size_t> next(gather_starts_.begin(), gather_starts_.end() - 1);
+  for (int b = 0; b < block_count(); ++b) {
+    const std::size_t entries = value_offsets_[b + 1] - value_offsets_[b];
+    const std::size_t parts = blocks_[b].with_transpose ? 2 : 1;
+    for (std::size_t s = 0; s < parts * entries; ++s) {
+      const int position = positions_[block_offsets_[b] + s];
+      gather_sources_[next[position]++] =
+          static_cast<std::uint32_t>(value_offsets_[b] + s % entries);
     }
   }
-  for (const std::exception_ptr& failure : failures)
-    if (failure) std::rethrow_exception(failure);
+}
+
+// With another process on a core, an OpenMP team (one barrier per colour of a block colouring,
+// the scheme before) waited at every barrier for its descheduled thread while the others spun:
+// runs of a cantilevered beam took up to 12× the serial time (docs/performance.md, "Scaling").
+// Here the blocks go to whichever thread is free (core/work_sharing.hpp), and where each block
+// lands is fixed, so the schedule does not change the result.
+void SparsePattern::assemble_parallel(const BlockCompute& compute) {
+  if (gather_starts_.empty()) build_gather();
+  WorkSharing& team = WorkSharing::shared();
+  if (static_cast<int>(workspaces_.size()) < team.thread_count())
+    workspaces_.resize(team.thread_count());
+  // At most 64 beam elements (~0.5 ms) per chunk.
+  const int chunk = team.chunk_for(block_count(), 64);
+  team.for_each_chunk(block_count(), chunk, [&](int begin, int end, int thread) {
+    Eigen::MatrixXd& K = workspaces_[thread];
+    for (int block_id = begin; block_id < end; ++block_id) {
+      const PatternBlock& block = blocks_[block_id];
+      K.setZero(static_cast<Eigen::Index>(block.rows.size()),
+                static_cast<Eigen::Index>(block.cols.size()));
+      compute(block_id, K);
+      check_block_matrix(block_id, block, K);
+      std::copy_n(K.data(), K.size(), block_values_.data() + value_offsets_[block_id]);
+    }
+  });
+  // Every block is stored: each value is set_zero() and the serial additions, in their order.
+  double* values = matrix_.valuePtr();
+  team.for_each_chunk(nonzeros(), 16384, [&](int begin, int end, int) {
+    for (int k = begin; k < end; ++k) {
+      double sum = 0.0;
+      for (std::size_t s = gather_starts_[k]; s < gather_starts_[k + 1]; ++s)
+        sum += block_values_[gather_sources_[s]];
+      values[k] = sum;
+    }
+  });
 }
 
 void SparsePattern::apply_dirichlet(const std::vector<int>& fixed_dofs,

@@ -1,32 +1,27 @@
 #include "system_assembly.hpp"
 
 #include <spar/core/converged_chart.hpp>
+#include <spar/core/work_sharing.hpp>
 #include <spar/error.hpp>
-
-#include <exception>
-#include <mutex>
 
 namespace spar::solvers::detail {
 
 namespace {
 
-/// Calls body(i) for i in [0, count), on OpenMP threads when `parallel`; the first exception
-/// thrown by any call is rethrown on the calling thread once the loop has finished, so none
-/// escapes an OpenMP region.
+/// Calls body(i) for i in [0, count): in order on this thread, or when `parallel` in chunks on
+/// the shared team (core/work_sharing.hpp), whose first exception is rethrown here once every
+/// running chunk has finished.
 template <class Body>
 void for_each_index(int count, bool parallel, const Body& body) {
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-#pragma omp parallel for schedule(dynamic) if (parallel)
-  for (int i = 0; i < count; ++i) {
-    try {
-      body(i);
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-    }
+  if (!parallel) {
+    for (int i = 0; i < count; ++i) body(i);
+    return;
   }
-  if (failure) std::rethrow_exception(failure);
+  core::WorkSharing& team = core::WorkSharing::shared();
+  team.for_each_chunk(count, team.chunk_for(count, 64),
+                      [&](int begin, int end, int) {
+                        for (int i = begin; i < end; ++i) body(i);
+                      });
 }
 
 /// Calls f(row, col) with the local offsets of the rotation entries of every pair of frame blocks
@@ -190,7 +185,7 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
         },
         execution_);
   } else {
-    for_each_index(total, execution_ == core::AssemblyExecution::parallel, [&](int id) {
+    for_each_index(total, pattern_->runs_parallel(execution_), [&](int id) {
       if (id < element_count)
         compute_element(id, in, nullptr, chart, increment, false, nullptr, with_energies);
       else

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "beam_fixtures.hpp"
 #include "random_rotations.hpp"
 #include "sliding_carriers.hpp"
@@ -61,6 +63,27 @@ TEST_CASE("centerline point: reference geometry and its derivatives, any element
         CHECK(beam.element(point.element).first_control_point == point.first_control_point);
       }
     }
+}
+
+TEST_CASE("sample_centerline: points on the knots and between them, any continuity",
+          "[gebt][centerline]") {
+  // 5 elements and 21 samples: every 4th sample is a knot (simple, double or triple), where the
+  // element found is the one starting there (the last one at the right end).
+  for (int continuity = 0; continuity < 3; ++continuity) {
+    INFO("C" << continuity);
+    const iga::NurbsCurve<3> curve = test::quarter_circle_carrier(1.7, 5, 3, continuity);
+    const iga::KnotVector& U = curve.knots();
+    core::Configuration q;
+    const core::GeometricallyExactBeam beam(carrier(curve), q);
+    const Eigen::MatrixXd samples = beam.sample_centerline(q, 21);
+    for (int i = 0; i < 21; ++i) {
+      const double u = U.first() + (U.last() - U.first()) * i / 20;
+      // The same NURBS sums as the curve's own evaluation: round-off of |x| = 1.7, 1e-14 relative.
+      CHECK((samples.row(i).transpose() - curve.derivatives(u, 0).col(0)).norm() <= 1.7e-14);
+      if (i % 4 == 0)
+        CHECK(beam.centerline_point(u, 0).element == std::min(i / 4, U.element_count() - 1));
+    }
+  }
 }
 
 TEST_CASE("centerline point: derivatives in u against finite differences in a deformed state",

@@ -1,6 +1,7 @@
 // SparsePattern: its structure and scatter against a dense matrix assembled by hand, Dirichlet
 // conditions, serial against parallel assembly, and the errors it raises.
 #include <spar/core/sparse_assembly.hpp>
+#include <spar/core/work_sharing.hpp>
 #include <spar/error.hpp>
 
 #include <catch2/catch.hpp>
@@ -162,7 +163,8 @@ TEST_CASE("apply_dirichlet zeroes rows and columns, sets the diagonal to 1 and t
 
 TEST_CASE("serial and parallel assembly give bitwise identical matrices",
           "[core][sparse_pattern][openmp]") {
-  const BeamChain chain = beam_chain(60, 5);
+  // 250 cubic elements (past parallel_assembly_min_blocks) and 5 constraint blocks.
+  const BeamChain chain = beam_chain(250, 5);
   SparsePattern serial(chain.size, chain.blocks);
   SparsePattern parallel(chain.size, chain.blocks);
   const core::BlockCompute compute = [&](int block_id, Eigen::MatrixXd& K) {
@@ -174,28 +176,48 @@ TEST_CASE("serial and parallel assembly give bitwise identical matrices",
     CHECK(same_values(serial.matrix(), parallel.matrix()));
   }
 
-  // Against a dense assembly in block order: the sums run in another order, so they agree to
-  // round-off. An entry sums at most 4 element contributions and 1 constraint contribution, each
-  // of size ≤ 1: ≤ 5 roundings of at most ulp(5)/2 = 4.4e-16 each, 2.2e-15 in all.
+  // Against a dense assembly in block order: the sums run in the same order, starting from 0,
+  // so they agree bitwise.
   Eigen::MatrixXd reference = Eigen::MatrixXd::Zero(chain.size, chain.size);
   for (int b = 0; b < static_cast<int>(chain.blocks.size()); ++b) {
     const Eigen::MatrixXd K = random_block(chain.blocks[b], b);
     add_dense(reference, chain.blocks[b], K, K.transpose());
   }
-  CHECK((Eigen::MatrixXd(serial.matrix()) - reference).cwiseAbs().maxCoeff() <= 3e-15);
+  CHECK(Eigen::MatrixXd(serial.matrix()) == reference);
 }
 
-TEST_CASE("a cubic beam chain needs four colours", "[core][sparse_pattern][openmp]") {
-  // Element e shares nodes with e±1, e±2, e±3, so four elements in a row are pairwise adjacent.
-  const BeamChain chain = beam_chain(40, 0);
-  CHECK(SparsePattern(chain.size, chain.blocks).colour_count() == 4);
+TEST_CASE("parallel assembly sums repeated dofs and coupling blocks as add_block does",
+          "[core][sparse_pattern][openmp]") {
+  // Block 2 repeats dof 5 and block 3 is a coupling block: value (5, 5) sums four entries of
+  // one block, (1, 6) and (6, 1) the two positions of one entry.
+  SparsePattern by_hand(small_size, small_blocks());
+  SparsePattern parallel(small_size, small_blocks());
+  const std::vector<PatternBlock> blocks = small_blocks();
+  for (int b = 0; b < static_cast<int>(blocks.size()); ++b)
+    by_hand.add_block(b, random_block(blocks[b], 10 + b));
+  parallel.assemble([&](int b, Eigen::MatrixXd& K) { K = random_block(blocks[b], 10 + b); },
+                    core::AssemblyExecution::parallel);
+  CHECK(same_values(by_hand.matrix(), parallel.matrix()));
+}
+
+TEST_CASE("automatic assembly runs in parallel from parallel_assembly_min_blocks blocks up",
+          "[core][sparse_pattern][openmp]") {
+  const bool threads = core::WorkSharing::shared().thread_count() > 1;
+  const BeamChain below = beam_chain(core::parallel_assembly_min_blocks - 1, 0);
+  const BeamChain at = beam_chain(core::parallel_assembly_min_blocks, 0);
+  const SparsePattern small(below.size, below.blocks);
+  const SparsePattern large(at.size, at.blocks);
+  CHECK_FALSE(small.runs_parallel(core::AssemblyExecution::automatic));
+  CHECK(large.runs_parallel(core::AssemblyExecution::automatic) == threads);
+  CHECK(small.runs_parallel(core::AssemblyExecution::parallel) == threads);
+  CHECK_FALSE(large.runs_parallel(core::AssemblyExecution::serial));
 }
 
 TEST_CASE("assemble rethrows a failure of the block computation", "[core][sparse_pattern]") {
   const BeamChain chain = beam_chain(20, 0);
   SparsePattern pattern(chain.size, chain.blocks);
-  const auto execution =
-      GENERATE(core::AssemblyExecution::serial, core::AssemblyExecution::parallel);
+  const auto execution = GENERATE(core::AssemblyExecution::serial, core::AssemblyExecution::parallel,
+                                  core::AssemblyExecution::automatic);
   CHECK_THROWS_WITH(pattern.assemble(
                         [](int block_id, Eigen::MatrixXd&) {
                           if (block_id == 7) throw std::runtime_error("element 7 failed");

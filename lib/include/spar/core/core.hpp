@@ -30,3 +30,4 @@
 #include <spar/core/section_integrals.hpp>
 #include <spar/core/sliding_cable.hpp>
 #include <spar/core/sparse_assembly.hpp>
+#include <spar/core/work_sharing.hpp>

@@ -15,6 +15,7 @@
 #include <Eigen/SparseCore>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -40,11 +41,18 @@ struct PatternBlock {
   static PatternBlock coupling(std::vector<int> rows, std::vector<int> cols);
 };
 
-/// How SparsePattern::assemble runs the blocks.
+/// How SparsePattern::assemble runs the blocks. Every execution gives bitwise the same matrix.
 enum class AssemblyExecution {
-  serial,   ///< one thread, blocks in colour order
-  parallel  ///< OpenMP threads, one colour at a time (the result is bitwise the serial one)
+  serial,    ///< one thread: each block computed and added in block order
+  parallel,  ///< the caller and helper threads compute the blocks (core/work_sharing.hpp), then sum
+             ///< every value from its contributions in block order
+  automatic  ///< parallel from `parallel_assembly_min_blocks` blocks up with > 1 thread, else serial
 };
+
+/// The block count from which AssemblyExecution::automatic runs in parallel. Measured on a 2-core
+/// machine with cubic beam elements (docs/performance.md, "Scaling"): below it waking the helper
+/// and storing the blocks cost more than the second thread saves.
+inline constexpr int parallel_assembly_min_blocks = 200;
 
 /// Computes the dense matrix of block `block_id` into `K`, which arrives sized rows × cols of
 /// that block and zeroed. Called concurrently from several threads by a parallel assembly, each
@@ -90,19 +98,26 @@ public:
   void add_block(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K,
                  const Eigen::Ref<const Eigen::MatrixXd>& K_transpose_position);
 
-  /// Assembles the whole matrix: set_zero(), then for every block calls `compute(block_id, K)`
-  /// and add_block(block_id, K). The parallel execution runs the blocks of one colour at a time
-  /// on OpenMP threads, each thread with its own workspace K; blocks of one colour share no dof,
-  /// so no two threads write the same value and no lock is taken. Both executions add the blocks
-  /// in the same order, so they give bitwise identical matrices. An exception thrown by `compute`
-  /// (or a K it resized) is rethrown on the calling thread once every block has been visited; the
-  /// values are then incomplete.
+  /// Assembles the whole matrix from every block's `compute(block_id, K)`.
+  ///
+  /// Serial: for every block in order, computes it into one workspace K and add_block()s it.
+  /// Parallel: the calling thread and the helpers of WorkSharing::shared() compute the blocks in
+  /// chunks taken on demand (a thread slowed by another process takes fewer, and none is waited
+  /// for before it starts), each into its own workspace, and copy every block into its own slot
+  /// of a block-value store; once every block is stored, they fill chunks of the matrix's values,
+  /// each value the sum of its contributions in block order. The sums are those of the serial
+  /// execution, in the same order, so both give bitwise identical matrices. The store and the
+  /// value-to-contribution map (a double and a 32-bit index per block entry) are built at the
+  /// first parallel assembly.
+  ///
+  /// An exception thrown by `compute` (or a K it resized) is rethrown on the calling thread once
+  /// every thread has finished; the values are then incomplete.
   void assemble(const BlockCompute& compute,
-                AssemblyExecution execution = AssemblyExecution::parallel);
+                AssemblyExecution execution = AssemblyExecution::automatic);
 
-  /// The number of colours of the block colouring used by the parallel assembly: blocks of one
-  /// colour share no dof.
-  int colour_count() const noexcept { return static_cast<int>(colour_starts_.size()) - 1; }
+  /// True when `execution` runs on more than one thread for this pattern (`automatic` resolved by
+  /// the block count and WorkSharing::shared().thread_count(), i.e. OMP_NUM_THREADS).
+  bool runs_parallel(AssemblyExecution execution) const noexcept;
 
   /// Imposes homogeneous Dirichlet conditions (zero increments) on `fixed_dofs`: zeroes their rows
   /// and columns in the values, puts 1 on their diagonal and 0 in `rhs`. The structure is
@@ -114,7 +129,9 @@ private:
   void scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K,
                const Eigen::Ref<const Eigen::MatrixXd>& K_transpose_position, bool transpose_of_K);
   void check_block_id(int block_id, const char* where) const;
-  void colour_blocks();
+  void assemble_serial(const BlockCompute& compute);
+  void assemble_parallel(const BlockCompute& compute);
+  void build_gather();
 
   SparseMatrix matrix_;
   std::vector<PatternBlock> blocks_;
@@ -125,11 +142,15 @@ private:
   std::vector<std::size_t> block_offsets_;
   /// The value index of every diagonal entry.
   std::vector<int> diagonal_positions_;
-  /// Blocks sorted by colour: colour c holds colour_order_[colour_starts_[c] .. colour_starts_[c+1]).
-  std::vector<int> colour_order_;
-  std::vector<int> colour_starts_;
-  /// One dense workspace per OpenMP thread, reused across assemblies.
+  /// One dense workspace per thread of the team, reused across assemblies.
   std::vector<Eigen::MatrixXd> workspaces_;
+  /// Parallel assembly: block b's dense matrix (column-major) at block_values_[value_offsets_[b]].
+  std::vector<double> block_values_;
+  std::vector<std::size_t> value_offsets_;
+  /// Parallel assembly: value k of the matrix is the sum of block_values_[gather_sources_[s]] for
+  /// s in [gather_starts_[k], gather_starts_[k+1]), in the order add_block() adds them.
+  std::vector<std::size_t> gather_starts_;
+  std::vector<std::uint32_t> gather_sources_;
 };
 
 }  // namespace spar::core

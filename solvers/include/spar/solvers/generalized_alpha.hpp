@@ -74,7 +74,9 @@ struct DynamicOptions {
   /// strain energy, and the step after the event is not shorter than ~1 µm over the slider's speed.
   bool locate_events = true;
   double event_tolerance = 1e-6;
-  core::AssemblyExecution assembly = core::AssemblyExecution::serial;
+  /// Parallel from core::parallel_assembly_min_blocks elements and joints up (bitwise the serial
+  /// result either way; docs/performance.md, "Scaling").
+  core::AssemblyExecution assembly = core::AssemblyExecution::automatic;
   /// Consistent initial assembly by the first initialize() (docs/dynamics.md, "Initial
   /// assembly"): the positions are moved onto Φ(q, t₀) = 0 and the velocities onto
   /// B v + Φ_t = 0, each by the least change in the metric of the mass matrix; what changed is

@@ -15,7 +15,9 @@ namespace spar::solvers {
 
 struct ModalOptions {
   int modes = 10;  ///< the lowest this many (fewer when the constrained model has fewer freedoms)
-  core::AssemblyExecution assembly = core::AssemblyExecution::serial;
+  /// Parallel from core::parallel_assembly_min_blocks elements and joints up (bitwise the serial
+  /// result either way; docs/performance.md, "Scaling").
+  core::AssemblyExecution assembly = core::AssemblyExecution::automatic;
 };
 
 /// The modes, lowest first.
