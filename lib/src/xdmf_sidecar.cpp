@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -42,14 +43,26 @@ std::string xml_escape(const std::string& text) {
 }
 
 /// "a b c" from {a, b, c}.
-std::string join(const std::vector<int>& values) {
+std::string join(const std::vector<std::string>& values) {
   std::string text;
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (i > 0) text += ' ';
-    text += std::to_string(values[i]);
+    text += values[i];
   }
   return text;
 }
+
+/// The decimal texts of `values`.
+std::vector<std::string> texts(const std::vector<int>& values) {
+  std::vector<std::string> result;
+  for (const int value : values) result.push_back(std::to_string(value));
+  return result;
+}
+
+// A step's grid is the same text for every step but for its step number, time and the
+// datasets' row count: it is generated once with these placeholders — characters XML 1.0 does
+// not allow, so no content holds them — and filled in per step.
+constexpr char step_placeholder = '\x01', time_placeholder = '\x02', rows_placeholder = '\x03';
 
 }  // namespace
 
@@ -59,12 +72,22 @@ XdmfSidecar::XdmfSidecar(std::string xmf_path, const std::string& h5_name, Resul
   if (h5_name.find_first_of(":|") != std::string::npos)
     throw Error("the results file's name " + h5_name + " contains ':' or '|', which XDMF references reserve", where,
                 "name the results file without ':' and '|'");
+  const auto has_control_character = [](const std::string& text) {
+    return std::any_of(text.begin(), text.end(), [](char c) { return c >= 0 && c < ' ' && c != '\t'; });
+  };
+  bool control = has_control_character(h5_name);
+  for (const CenterlineField& field : layout_.centerline_fields) control = control || has_control_character(field.name);
+  if (control)
+    throw Error("the results file's name or a centerline field's name contains a control character, which XML 1.0 "
+                "does not allow", where, "use printable characters in names");
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0)
     throw Error(std::string("cannot create the sidecar: ") + std::strerror(errno), where,
                 "check that the output folder is writable");
   write_at(header + closing_tags, 0);
   body_end_ = static_cast<off_t>(header.size());
+  grid_template_ = step_grid(std::string(1, step_placeholder), std::string(1, time_placeholder),
+                             std::string(1, rows_placeholder));
 }
 
 XdmfSidecar::~XdmfSidecar() {
@@ -73,8 +96,20 @@ XdmfSidecar::~XdmfSidecar() {
 
 void XdmfSidecar::append(int first_step, const std::vector<double>& times, int rows) {
   std::string grids;
-  for (std::size_t i = 0; i < times.size(); ++i)
-    grids += step_grid(first_step + static_cast<int>(i), times[i], rows);
+  grids.reserve(times.size() * (grid_template_.size() + 64));
+  const std::string rows_text = std::to_string(rows);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const std::string step_text = std::to_string(first_step + static_cast<int>(i));
+    const std::string time_text = format_double(times[i]);
+    for (const char c : grid_template_) {
+      switch (c) {
+        case step_placeholder: grids += step_text; break;
+        case time_placeholder: grids += time_text; break;
+        case rows_placeholder: grids += rows_text; break;
+        default: grids += c;
+      }
+    }
+  }
   if (grids.empty()) return;
   write_at(grids + closing_tags, body_end_);
   body_end_ += static_cast<off_t>(grids.size());
@@ -93,28 +128,29 @@ void XdmfSidecar::write_at(const std::string& text, off_t offset) {
   }
 }
 
-std::string XdmfSidecar::step_item(const std::string& dataset, int step, int rows, std::vector<int> shape, int taken,
-                                   const std::string& indent) const {
-  std::vector<int> start(shape.size() + 1, 0), stride(shape.size() + 1, 1), count{1}, dims{rows};
-  count.insert(count.end(), shape.begin(), shape.end());
-  dims.insert(dims.end(), shape.begin(), shape.end());
+std::string XdmfSidecar::step_item(const std::string& dataset, const std::string& step, const std::string& rows,
+                                   std::vector<int> shape, int taken, const std::string& indent) const {
+  std::vector<std::string> start(shape.size() + 1, "0"), stride(shape.size() + 1, "1"), count{"1"}, dims{rows};
+  const std::vector<std::string> shape_texts = texts(shape);
+  count.insert(count.end(), shape_texts.begin(), shape_texts.end());
+  dims.insert(dims.end(), shape_texts.begin(), shape_texts.end());
   start[0] = step;
-  count.back() = taken;
+  count.back() = std::to_string(taken);
   shape.back() = taken;
-  return indent + "<DataItem Dimensions=\"" + join(shape) +
+  return indent + "<DataItem Dimensions=\"" + join(texts(shape)) +
          "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" + h5_name_ + ":" + dataset + "|" + join(start) +
          ":" + join(stride) + ":" + join(count) + ":" + join(dims) + "</DataItem>\n";
 }
 
-std::string XdmfSidecar::step_grid(int step, double time, int rows) const {
-  std::string grid = "   <Grid Name=\"step" + std::to_string(step) + "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n" +
-                     "    <Time Value=\"" + format_double(time) + "\"/>\n";
+std::string XdmfSidecar::step_grid(const std::string& step, const std::string& time, const std::string& rows) const {
+  std::string grid = "   <Grid Name=\"step" + step + "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n" +
+                     "    <Time Value=\"" + time + "\"/>\n";
   for (std::size_t k = 0; k < layout_.centerline_points.size(); ++k) grid += beam_grid(step, k, rows);
   if (layout_.node_count > 0) grid += nodes_grid(step, rows);
   return grid + "   </Grid>\n";
 }
 
-std::string XdmfSidecar::beam_grid(int step, std::size_t beam, int rows) const {
+std::string XdmfSidecar::beam_grid(const std::string& step, std::size_t beam, const std::string& rows) const {
   const int p = layout_.centerline_points[beam];
   const std::string k = std::to_string(beam), points = std::to_string(p);
   std::string grid =
@@ -135,7 +171,7 @@ std::string XdmfSidecar::beam_grid(int step, std::size_t beam, int rows) const {
   return grid + "    </Grid>\n";
 }
 
-std::string XdmfSidecar::nodes_grid(int step, int rows) const {
+std::string XdmfSidecar::nodes_grid(const std::string& step, const std::string& rows) const {
   const int n = layout_.node_count;
   std::string grid = "    <Grid Name=\"nodes\" GridType=\"Uniform\">\n     <Topology TopologyType=\"Polyvertex\" "
                      "NumberOfElements=\"" + std::to_string(n) + "\" NodesPerElement=\"1\">\n" +

@@ -37,13 +37,14 @@ public:
   void append(int first_step, const std::vector<double>& times, int rows);
 
 private:
-  std::string step_grid(int step, double time, int rows) const;
-  std::string beam_grid(int step, std::size_t beam, int rows) const;
-  std::string nodes_grid(int step, int rows) const;
+  /// The grid of one step, with the texts of its step number, time and row count.
+  std::string step_grid(const std::string& step, const std::string& time, const std::string& rows) const;
+  std::string beam_grid(const std::string& step, std::size_t beam, const std::string& rows) const;
+  std::string nodes_grid(const std::string& step, const std::string& rows) const;
   /// A DataItem reading step `step` of `dataset` (rows × shape, doubles): the first `taken`
   /// entries of its last dimension.
-  std::string step_item(const std::string& dataset, int step, int rows, std::vector<int> shape, int taken,
-                        const std::string& indent) const;
+  std::string step_item(const std::string& dataset, const std::string& step, const std::string& rows,
+                        std::vector<int> shape, int taken, const std::string& indent) const;
   /// Writes `text` at `offset`, all of it; throws spar::Error naming the sidecar on failure.
   void write_at(const std::string& text, off_t offset);
 
@@ -52,6 +53,8 @@ private:
   ResultsLayout layout_;
   int fd_ = -1;
   off_t body_end_ = 0;  ///< where the closing tags begin
+  /// step_grid with placeholders for the step, time and row count (xdmf_sidecar.cpp).
+  std::string grid_template_;
 };
 
 }  // namespace spar::core::detail

@@ -232,6 +232,9 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
     layout = spar::test::sample_layout();
     layout.centerline_fields[0].name = "s|t";
     CHECK_THROWS_WITH(ResultsWriter(folder.file("i.h5"), layout), Contains("\"s|t\" contains ':' or '|'"));
+    layout = spar::test::sample_layout();
+    layout.centerline_fields[0].name = std::string("s") + char(1) + "t";
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("j.h5"), layout), Contains("control character"));
     CHECK_THROWS_WITH(ResultsWriter(folder.file("d.h5"), spar::test::sample_layout(), 0), Contains("flush_every = 0"));
   }
   SECTION("names taken and a closed file") {
