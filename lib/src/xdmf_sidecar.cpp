@@ -86,8 +86,17 @@ XdmfSidecar::XdmfSidecar(std::string xmf_path, const std::string& h5_name, Resul
                 "check that the output folder is writable");
   write_at(header + closing_tags, 0);
   body_end_ = static_cast<off_t>(header.size());
-  grid_template_ = step_grid(std::string(1, step_placeholder), std::string(1, time_placeholder),
-                             std::string(1, rows_placeholder));
+  const std::string grid = step_grid(std::string(1, step_placeholder), std::string(1, time_placeholder),
+                                     std::string(1, rows_placeholder));
+  grid_pieces_.emplace_back();
+  for (const char c : grid) {
+    if (c == step_placeholder || c == time_placeholder || c == rows_placeholder) {
+      grid_placeholders_.push_back(c);
+      grid_pieces_.emplace_back();
+    } else {
+      grid_pieces_.back() += c;
+    }
+  }
 }
 
 XdmfSidecar::~XdmfSidecar() {
@@ -96,19 +105,16 @@ XdmfSidecar::~XdmfSidecar() {
 
 void XdmfSidecar::append(int first_step, const std::vector<double>& times, int rows) {
   std::string grids;
-  grids.reserve(times.size() * (grid_template_.size() + 64));
   const std::string rows_text = std::to_string(rows);
   for (std::size_t i = 0; i < times.size(); ++i) {
     const std::string step_text = std::to_string(first_step + static_cast<int>(i));
     const std::string time_text = format_double(times[i]);
-    for (const char c : grid_template_) {
-      switch (c) {
-        case step_placeholder: grids += step_text; break;
-        case time_placeholder: grids += time_text; break;
-        case rows_placeholder: grids += rows_text; break;
-        default: grids += c;
-      }
+    for (std::size_t k = 0; k < grid_placeholders_.size(); ++k) {
+      grids += grid_pieces_[k];
+      const char placeholder = grid_placeholders_[k];
+      grids += placeholder == step_placeholder ? step_text : placeholder == time_placeholder ? time_text : rows_text;
     }
+    grids += grid_pieces_.back();
   }
   if (grids.empty()) return;
   write_at(grids + closing_tags, body_end_);

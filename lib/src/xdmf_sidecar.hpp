@@ -53,8 +53,10 @@ private:
   ResultsLayout layout_;
   int fd_ = -1;
   off_t body_end_ = 0;  ///< where the closing tags begin
-  /// step_grid with placeholders for the step, time and row count (xdmf_sidecar.cpp).
-  std::string grid_template_;
+  /// step_grid cut at its placeholders for the step, time and row count (xdmf_sidecar.cpp): a
+  /// step's grid is pieces[0], its value of placeholders[0], pieces[1], …, pieces.back().
+  std::vector<std::string> grid_pieces_;
+  std::vector<char> grid_placeholders_;
 };
 
 }  // namespace spar::core::detail

@@ -36,7 +36,7 @@ struct PointKinematics {
   Vector3 v;                               // R_rᵀ x′
   Vector3 w;                               // Eᵀ v = Rᵀ x′
   Vector3 kappa;                           // T Θ′
-  Matrix3 kappa_derivative;                // ∂(TΘ′)/∂Θ
+  Matrix3 kappa_derivative;                // ∂(TΘ′)/∂Θ: only where the force is computed
 };
 
 PointKinematics kinematics(const detail::RelativeRotations& rel,
@@ -47,7 +47,6 @@ PointKinematics kinematics(const detail::RelativeRotations& rel,
   k.v = rel.reference.transpose() * f.x_prime;
   k.w = k.exp_tangent.rotation.transpose() * k.v;
   k.kappa = k.exp_tangent.tangent * f.theta_prime;
-  k.kappa_derivative = lie::tangent_derivative(f.theta, f.theta_prime);
   return k;
 }
 
@@ -207,13 +206,14 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
   for (const BeamGaussPoint& gp : beam.element(e).gauss_points) {
     const detail::InterpolatedFields f =
         detail::interpolate(beam, e, q, rel, gp.shape, gp.shape_derivative);
-    const PointKinematics kin = kinematics(rel, f);
+    PointKinematics kin = kinematics(rel, f);
     Eigen::Matrix<double, 6, 1> strain;
     strain << kin.w - gp.reference_translational_strain, kin.kappa - gp.reference_curvature;
     const Eigen::Matrix<double, 6, 6>& C = beam.constitutive()[gp.part];
     const Eigen::Matrix<double, 6, 1> stress = C * strain;  // (N, M), 003 eq. 17
     result.strain_energy += 0.5 * gp.weight * strain.dot(stress);
     if (!with_force) continue;
+    kin.kappa_derivative = lie::tangent_derivative(f.theta, f.theta_prime);
 
     const Vector12 g_z = gp.weight * strain_operator_transpose_times(kin, stress.head<3>(), stress.tail<3>());
     // g_y += Lᵀ g_z for the linear map z ← y of B9: x′ = Σ N_I′ x_I, a, Θ = Σ N_I ψ_I, Θ′ = Σ N_I′ ψ_I.
