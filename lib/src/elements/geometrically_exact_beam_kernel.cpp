@@ -36,7 +36,7 @@ struct PointKinematics {
   Vector3 v;                               // R_rᵀ x′
   Vector3 w;                               // Eᵀ v = Rᵀ x′
   Vector3 kappa;                           // T Θ′
-  Matrix3 kappa_derivative;                // ∂(TΘ′)/∂Θ: only where the force is computed
+  Matrix3 kappa_derivative;                // ∂(TΘ′)/∂Θ: only where the stiffness is computed
 };
 
 PointKinematics kinematics(const detail::RelativeRotations& rel,
@@ -65,8 +65,10 @@ Matrix6x12 strain_operator(const PointKinematics& k) {
 }
 
 /// Bᵀσ for σ = (n, m), written out from B's blocks (eq. B5) without forming B — the force
-/// alone needs no more:  [R n,  (E n) × v,  Tᵀ (n × w) + (∂(TΘ′)/∂Θ)ᵀ m,  Tᵀ m].
-Vector12 strain_operator_transpose_times(const PointKinematics& k, const Vector3& n, const Vector3& m) {
+/// alone needs no more:  [R n,  (E n) × v,  Tᵀ (n × w) + (∂(TΘ′)/∂Θ)ᵀ m,  Tᵀ m], with
+/// `curvature_gradient` = (∂(TΘ′)/∂Θ)ᵀ m, the gradient of mᵀ T(Θ) Θ′.
+Vector12 strain_operator_transpose_times(const PointKinematics& k, const Vector3& n, const Vector3& m,
+                                          const Vector3& curvature_gradient) {
   const Matrix3& E = k.exp_tangent.rotation;
   const Matrix3& T = k.exp_tangent.tangent;
   const Vector3 En = E * n;
@@ -74,7 +76,7 @@ Vector12 strain_operator_transpose_times(const PointKinematics& k, const Vector3
   g.segment<3>(3 * z_x_prime) = k.rotation * n;
   g.segment<3>(3 * z_a) = En.cross(k.v);
   g.segment<3>(3 * z_theta) =
-      T.transpose() * n.cross(k.w) + k.kappa_derivative.transpose() * m;
+      T.transpose() * n.cross(k.w) + curvature_gradient;
   g.segment<3>(3 * z_theta_prime) = T.transpose() * m;
   return g;
 }
@@ -213,9 +215,14 @@ void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Conf
     const Eigen::Matrix<double, 6, 1> stress = C * strain;  // (N, M), 003 eq. 17
     result.strain_energy += 0.5 * gp.weight * strain.dot(stress);
     if (!with_force) continue;
-    kin.kappa_derivative = lie::tangent_derivative(f.theta, f.theta_prime);
 
-    const Vector12 g_z = gp.weight * strain_operator_transpose_times(kin, stress.head<3>(), stress.tail<3>());
+    // (∂κ/∂Θ)ᵀ m from the derivative where the stiffness needs it anyway, else directly.
+    if (with_stiffness) kin.kappa_derivative = lie::tangent_derivative(f.theta, f.theta_prime);
+    const Vector3 curvature_gradient = with_stiffness
+                                           ? Vector3(kin.kappa_derivative.transpose() * stress.tail<3>())
+                                           : lie::tangent_gradient(f.theta, stress.tail<3>(), f.theta_prime);
+    const Vector12 g_z =
+        gp.weight * strain_operator_transpose_times(kin, stress.head<3>(), stress.tail<3>(), curvature_gradient);
     // g_y += Lᵀ g_z for the linear map z ← y of B9: x′ = Σ N_I′ x_I, a, Θ = Σ N_I ψ_I, Θ′ = Σ N_I′ ψ_I.
     for (int I = 0; I < k; ++I) g_y.segment<3>(3 * I) += gp.shape_derivative[I] * g_z.segment<3>(3 * z_x_prime);
     g_y.segment<3>(3 * k) += g_z.segment<3>(3 * z_a);

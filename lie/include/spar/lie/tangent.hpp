@@ -167,6 +167,24 @@ Matrix3<typename DerivedT::Scalar> tangent_transpose_second_derivative(
   return detail::tangent_family_second_derivative<Scalar>(theta, a, b, Scalar(-1));
 }
 
+/// The gradient ∂(mᵀ T(Θ) b)/∂Θ = tangent_derivative(Θ, b)ᵀ m of the scalar mᵀT(Θ)b, without
+/// forming the 3 × 3 derivative (eq. C6 contracted with m): with the coefficients of T,
+///   [m·(−c2 Θ×b + c3 Θ×(Θ×b))] Θ + a2 (m × b) + a3 ((Θ·b) m + (Θ·m) b − 2 (m·b) Θ).
+/// It is the force of the curvature energy mᵀκ, κ = T(Θ)Θ′, for b = Θ′.
+template <class DerivedT, class DerivedM, class DerivedB>
+Vector3<typename DerivedT::Scalar> tangent_gradient(const Eigen::MatrixBase<DerivedT>& theta_in,
+                                                    const Eigen::MatrixBase<DerivedM>& m_in,
+                                                    const Eigen::MatrixBase<DerivedB>& b_in) {
+  using Scalar = typename DerivedT::Scalar;
+  using coefficients::a2, coefficients::a3, coefficients::c2, coefficients::c3;
+  const Vector3<Scalar> theta = theta_in, m = m_in, b = b_in;
+  const Scalar angle = detail::checked_angle(theta, "lie::tangent_gradient");
+  const Vector3<Scalar> theta_cross_b = theta.cross(b);
+  const Scalar along_theta = m.dot(-c2(angle) * theta_cross_b + c3(angle) * theta.cross(theta_cross_b));
+  return along_theta * theta + a2(angle) * m.cross(b) +
+         a3(angle) * (theta.dot(b) * m + theta.dot(m) * b - 2 * m.dot(b) * theta);
+}
+
 /// The Hessian ∂²(mᵀ T(Θ) b)/∂Θ² of the scalar mᵀT(Θ)b (symmetric; eq. C7b). With s = mᵀΘ̃²b,
 /// p = b × m and q = ∂s/∂Θ = (b·Θ) m + (m·Θ) b − 2 (m·b) Θ:
 ///   (b3 s − b2 Θ·p) ΘΘᵀ − c2 (Θpᵀ + pΘᵀ + (Θ·p) I) + c3 (Θqᵀ + qΘᵀ + s I) + a3 (mbᵀ + bmᵀ − 2 (m·b) I).
