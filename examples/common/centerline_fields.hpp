@@ -1,7 +1,7 @@
 #pragma once
 // The point data the examples write along their beams' centerlines (ResultsLayout::
 // centerline_fields), so ParaView can colour the rods: the reference arc length from the root
-// and the velocity, both at the points of a core::CenterlineSampler.
+// and the velocity, both at the points of a core::CenterlineSampler (RecordedCenterline).
 #include <spar/spar.hpp>
 
 #include <vector>
@@ -17,20 +17,28 @@ inline std::vector<core::CenterlineField> centerline_field_layout() {
            .description = "velocity of the centerline point, inertial frame", .components = 3}};
 }
 
-/// Reference arc length from the root at the sampler's points: the cumulative chord lengths of
-/// the sampled reference centerline (exact for a straight beam), points × 1.
-inline Eigen::MatrixXd reference_arc_length(const core::CenterlineSampler& points, const core::Configuration& reference) {
-  const Eigen::MatrixXd x0 = points.positions(reference);
-  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(points.size(), 1);
-  for (int i = 1; i < points.size(); ++i) s(i, 0) = s(i - 1, 0) + (x0.row(i) - x0.row(i - 1)).norm();
-  return s;
-}
+/// One beam's centerline as the results file records it: its sample points (the NURBS basis
+/// computed once) and their reference arc lengths from the root.
+class RecordedCenterline {
+public:
+  /// `points` samples of `beam`; the arc lengths are the cumulative chord lengths of the sampled
+  /// `reference` centerline (exact for a straight beam).
+  RecordedCenterline(const core::GeometricallyExactBeam& beam, int points, const core::Configuration& reference)
+      : points_(beam, points), arc_length_(Eigen::MatrixXd::Zero(points, 1)) {
+    const Eigen::MatrixXd x0 = points_.positions(reference);
+    for (int i = 1; i < points; ++i) arc_length_(i, 0) = arc_length_(i - 1, 0) + (x0.row(i) - x0.row(i - 1)).norm();
+  }
 
-/// One beam's fields for ResultsStep::centerline_fields, in centerline_field_layout() order.
-inline std::vector<Eigen::MatrixXd> centerline_fields(const core::CenterlineSampler& points,
-                                                      const Eigen::MatrixXd& arc_length, const core::Configuration& q,
-                                                      const Eigen::VectorXd& velocity) {
-  return {arc_length, points.velocities(q, velocity)};
-}
+  /// The centerline in q, points × 3 (ResultsStep::centerlines).
+  Eigen::MatrixXd positions(const core::Configuration& q) const { return points_.positions(q); }
+  /// The fields in centerline_field_layout() order (ResultsStep::centerline_fields).
+  std::vector<Eigen::MatrixXd> fields(const core::Configuration& q, const Eigen::VectorXd& velocity) const {
+    return {arc_length_, points_.velocities(q, velocity)};
+  }
+
+private:
+  core::CenterlineSampler points_;
+  Eigen::MatrixXd arc_length_;
+};
 
 }  // namespace spar::examples

@@ -111,8 +111,7 @@ int main(int argc, char** argv) try {
 
   // 5. Integrate and record.
   const int samples = 10 * elements + 1;
-  const core::CenterlineSampler rod_points(rod, samples);
-  const Eigen::MatrixXd arc_length = examples::reference_arc_length(rod_points, initial_state);
+  const examples::RecordedCenterline rod_line(rod, samples, initial_state);
   core::ResultsWriter results(out + "/flexible_pendulum.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
@@ -166,8 +165,8 @@ int main(int argc, char** argv) try {
                          static_cast<double>(integrator.last_step_iterations())},
                         examples::energy_balance_values(energy)),
                     .probes = {tip},
-                    .centerlines = {rod_points.positions(q)},
-                    .centerline_fields = {examples::centerline_fields(rod_points, arc_length, q, integrator.velocity())}});
+                    .centerlines = {rod_line.positions(q)},
+                    .centerline_fields = {rod_line.fields(q, integrator.velocity())}});
   };
   record();
   core::ProgressBar progress(t_end, "flexible_pendulum");

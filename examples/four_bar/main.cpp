@@ -84,9 +84,7 @@ int main(int argc, char** argv) try {
   // 4. Integrate and record.
   std::filesystem::create_directories(out);
   const int samples = 10 * elements + 1;
-  const core::CenterlineSampler crank_points(crank, samples), rocker_points(rocker, samples);
-  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank_points, initial_state);
-  const Eigen::MatrixXd rocker_arc_length = examples::reference_arc_length(rocker_points, initial_state);
+  const examples::RecordedCenterline crank_line(crank, samples, initial_state), rocker_line(rocker, samples, initial_state);
   core::ResultsWriter results(out + "/four_bar.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
@@ -176,10 +174,8 @@ int main(int argc, char** argv) try {
                         examples::energy_balance_values(energy)),
                     .probes = {q.position[mechanism.crank_tip], q.position[mechanism.rocker_tip],
                                q.position[mechanism.coupler_node], at_a.force, at_a.moment, at_d.force},
-                    .centerlines = {crank_points.positions(q), rocker_points.positions(q)},
-                    .centerline_fields = {
-                        examples::centerline_fields(crank_points, crank_arc_length, q, sample.velocity),
-                        examples::centerline_fields(rocker_points, rocker_arc_length, q, sample.velocity)}});
+                    .centerlines = {crank_line.positions(q), rocker_line.positions(q)},
+                    .centerline_fields = {crank_line.fields(q, sample.velocity), rocker_line.fields(q, sample.velocity)}});
   };
   // Every step, or every output_interval through a solvers::TimeSampler.
   std::optional<solvers::TimeSampler> sampler;

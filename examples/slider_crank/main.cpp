@@ -93,9 +93,8 @@ int main(int argc, char** argv) try {
   // `record_every` steps (the first and the last always).
   const long record_every = std::max(1L, std::lround(output_interval / h));
   const int samples = 10 * elements + 1;  // centerline points per rod in the results file
-  const core::CenterlineSampler crank_points(crank, samples), coupler_points(coupler, samples);
-  const Eigen::MatrixXd crank_arc_length = examples::reference_arc_length(crank_points, initial_state);
-  const Eigen::MatrixXd coupler_arc_length = examples::reference_arc_length(coupler_points, initial_state);
+  const examples::RecordedCenterline crank_line(crank, samples, initial_state),
+      coupler_line(coupler, samples, initial_state);
   core::ResultsWriter results(out + "/slider_crank.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
@@ -161,10 +160,9 @@ int main(int argc, char** argv) try {
                          static_cast<double>(integrator.last_step_iterations())},
                         examples::energy_balance_values(energy)),
                     .probes = {midpoint, q.position[crank_tip]},
-                    .centerlines = {crank_points.positions(q), coupler_points.positions(q)},
-                    .centerline_fields = {
-                        examples::centerline_fields(crank_points, crank_arc_length, q, integrator.velocity()),
-                        examples::centerline_fields(coupler_points, coupler_arc_length, q, integrator.velocity())}});
+                    .centerlines = {crank_line.positions(q), coupler_line.positions(q)},
+                    .centerline_fields = {crank_line.fields(q, integrator.velocity()),
+                                          coupler_line.fields(q, integrator.velocity())}});
   };
   observe(false);
   core::ProgressBar progress(t_end, "slider_crank");

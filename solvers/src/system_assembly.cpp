@@ -24,6 +24,11 @@ void for_each_index(int count, bool parallel, const Body& body) {
                       });
 }
 
+/// global(dofs[i]) += local(i) for every entry of an element's local vector.
+void add_local(Eigen::VectorXd& global, const std::vector<int>& dofs, const Eigen::VectorXd& local) {
+  for (std::size_t i = 0; i < dofs.size(); ++i) global(dofs[i]) += local(static_cast<Eigen::Index>(i));
+}
+
 /// Calls f(row, col) with the local offsets of the rotation entries of every pair of frame blocks
 /// among `blocks`.
 template <class F>
@@ -198,13 +203,14 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
   constraint_force_.setZero();
   const bool with_energy = (c == nullptr) && with_energies;
   if (with_energy) external_force_.setZero();
-  for (const ElementWork& w : element_work_)
+  for (const ElementWork& w : element_work_) {
     for (std::size_t i = 0; i < w.dofs.size(); ++i) {
-      const auto local = static_cast<Eigen::Index>(i);
-      residual_(w.dofs[i]) += w.output.residual(local);
-      scale_(w.dofs[i]) += std::abs(w.output.residual(local));
-      if (with_energy) external_force_(w.dofs[i]) += w.output.external_force(local);
+      const double r = w.output.residual(static_cast<Eigen::Index>(i));
+      residual_(w.dofs[i]) += r;
+      scale_(w.dofs[i]) += std::abs(r);
     }
+    if (with_energy) add_local(external_force_, w.dofs, w.output.external_force);
+  }
   for (const ConstraintWork& w : constraint_work_) gather_constraint(w, true);
 }
 
@@ -231,9 +237,7 @@ void SystemAssembly::evaluate_constraints_and_loads(const core::ElementInput& in
   external_force_.setZero();
   for (const int id : load_elements_) {
     compute_element(id, in, nullptr, Chart::local_increment, increment, false, nullptr);
-    const ElementWork& w = element_work_[id];
-    for (std::size_t i = 0; i < w.dofs.size(); ++i)
-      external_force_(w.dofs[i]) += w.output.external_force(static_cast<Eigen::Index>(i));
+    add_local(external_force_, element_work_[id].dofs, element_work_[id].output.external_force);
   }
 }
 
@@ -246,8 +250,7 @@ void SystemAssembly::evaluate_energies(const core::ElementInput& in) {
     ElementWork& w = element_work_[id];
     w.output.reset(static_cast<int>(w.dofs.size()), request);
     model_.element(id).evaluate(in, request, w.output);
-    for (std::size_t i = 0; i < w.dofs.size(); ++i)
-      external_force_(w.dofs[i]) += w.output.external_force(static_cast<Eigen::Index>(i));
+    add_local(external_force_, w.dofs, w.output.external_force);
   }
 }
 
