@@ -39,7 +39,8 @@ Eigen::MatrixXd CenterlineSampler::velocities(const Configuration& q, const Eige
   if (velocity.size() != q.dof_count())
     throw Error("the velocity has " + std::to_string(velocity.size()) + " entries, the configuration " +
                     std::to_string(q.dof_count()) + " dofs",
-                "core::CenterlineSampler::velocities", "pass the model's velocity in the global tangent layout");  return combine([&](int node) { return Eigen::Vector3d(velocity.segment<3>(q.blocks[node].offset)); });
+                "core::CenterlineSampler::velocities", "pass the model's velocity in the global tangent layout");
+  return combine([&](int node) { return Eigen::Vector3d(velocity.segment<3>(q.blocks[node].offset)); });
 }
 
 }  // namespace spar::core
