@@ -30,7 +30,7 @@ public:
   const std::vector<int>& blocks() const override { return blocks_; }
   std::string name() const override { return "coordinate limit on block " + std::to_string(blocks_[0]); }
 
-  void evaluate(const core::ElementInput& in, const core::ElementRequest&, core::ElementOutput&) const override {
+  void compute(const core::ElementInput& in, const core::ElementRequest&, core::ElementOutput&) const override {
     const double p = in.q->vector(blocks_[0])(parameters_.coordinate);
     if (parameters_.direction * p > parameters_.limit) {
       ++*refusals_;

@@ -32,8 +32,8 @@ public:
     return "spring between blocks " + std::to_string(blocks_[0]) + " and " + std::to_string(blocks_[1]);
   }
 
-  void evaluate(const core::ElementInput& in, const core::ElementRequest& request,
-                core::ElementOutput& out) const override {
+  void compute(const core::ElementInput& in, const core::ElementRequest& request,
+               core::ElementOutput& out) const override {
     const core::Configuration& q = *in.q;
     const Eigen::Vector3d d = q.vector(blocks_[1]) - q.vector(blocks_[0]);
     const double l = d.norm();

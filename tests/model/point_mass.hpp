@@ -25,8 +25,8 @@ public:
   const std::vector<int>& blocks() const override { return blocks_; }
   std::string name() const override { return "point mass on block " + std::to_string(blocks_[0]); }
 
-  void evaluate(const core::ElementInput& in, const core::ElementRequest& request,
-                core::ElementOutput& out) const override {
+  void compute(const core::ElementInput& in, const core::ElementRequest& request,
+               core::ElementOutput& out) const override {
     const core::Configuration& q = *in.q;
     if (q.is_frame(blocks_[0]) || q.blocks[blocks_[0]].size != 3)
       throw Error("block " + std::to_string(blocks_[0]) + " is not a 3-vector block",

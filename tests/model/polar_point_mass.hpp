@@ -26,8 +26,8 @@ public:
   const std::vector<int>& blocks() const override { return blocks_; }
   std::string name() const override { return "polar point mass"; }
 
-  void evaluate(const core::ElementInput& in, const core::ElementRequest& request,
-                core::ElementOutput& out) const override {
+  void compute(const core::ElementInput& in, const core::ElementRequest& request,
+               core::ElementOutput& out) const override {
     const core::Configuration& q = *in.q;
     const std::vector<int> dofs = core::block_dofs(q, blocks_);
     if (dofs.size() != 2)

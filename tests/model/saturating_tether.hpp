@@ -27,8 +27,8 @@ public:
   const std::vector<int>& blocks() const override { return blocks_; }
   std::string name() const override { return "saturating tether"; }
 
-  void evaluate(const core::ElementInput& in, const core::ElementRequest& request,
-                core::ElementOutput& out) const override {
+  void compute(const core::ElementInput& in, const core::ElementRequest& request,
+               core::ElementOutput& out) const override {
     const double x = p_.stiffness * in.q->vector(blocks_[0])(0) / p_.max_tension;
     if (request.residual) out.residual(0) = p_.max_tension * std::tanh(x) - in.load_factor * p_.load;
     if (request.stiffness) {

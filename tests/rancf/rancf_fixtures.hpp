@@ -143,8 +143,8 @@ class NodeForce final : public core::Element {
 public:
   NodeForce(int node, const Eigen::Matrix<double, Dim, 1>& force) : blocks_{node}, force_(force) {}
   const std::vector<int>& blocks() const override { return blocks_; }
-  void evaluate(const core::ElementInput& in, const core::ElementRequest& request,
-                core::ElementOutput& out) const override {
+  void compute(const core::ElementInput& in, const core::ElementRequest& request,
+               core::ElementOutput& out) const override {
     if (request.residual) out.residual.template head<Dim>() -= in.load_factor * force_;
   }
   std::string name() const override { return "tip force"; }

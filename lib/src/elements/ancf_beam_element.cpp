@@ -431,8 +431,8 @@ typename AncfBeamElement<transverse>::Matrix AncfBeamElement<transverse>::mass_m
 }
 
 template <int transverse>
-void AncfBeamElement<transverse>::evaluate(const ElementInput& in, const ElementRequest& request,
-                                           ElementOutput& out) const {
+void AncfBeamElement<transverse>::compute(const ElementInput& in, const ElementRequest& request,
+                                          ElementOutput& out) const {
   const Tables& t = *tables_;
   const Vector e = coordinates(*in.q);
   Vector Q;

@@ -26,8 +26,8 @@ std::string GeometricallyExactBeamElement::name() const {
   return "beam " + std::to_string(beam_index_) + ", element " + std::to_string(element_);
 }
 
-void GeometricallyExactBeamElement::evaluate(const ElementInput& in, const ElementRequest& request,
-                                             ElementOutput& out) const {
+void GeometricallyExactBeamElement::compute(const ElementInput& in, const ElementRequest& request,
+                                            ElementOutput& out) const {
   const Configuration& q = *in.q;
   const int k = static_cast<int>(blocks_.size());
   const int n = frame_dofs * k;

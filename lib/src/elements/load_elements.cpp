@@ -36,8 +36,8 @@ NodalLoadElement::NodalLoadElement(const Load& load, std::function<double(double
   if (const auto* m = std::get_if<NodalMoment>(&load_)) blocks_ = {m->node};
 }
 
-void NodalLoadElement::evaluate(const ElementInput& in, const ElementRequest& request,
-                                ElementOutput& out) const {
+void NodalLoadElement::compute(const ElementInput& in, const ElementRequest& request,
+                               ElementOutput& out) const {
   const double scale = load_scale(in, history_);
   Eigen::Matrix<double, frame_dofs, 1> f = Eigen::Matrix<double, frame_dofs, 1>::Zero();
   if (const auto* force = std::get_if<NodalForce>(&load_)) {
@@ -69,8 +69,8 @@ DistributedLoadElement::DistributedLoadElement(const Load& load, const Geometric
   for (int I = 0; I <= beam.degree(); ++I) blocks_.push_back(first + I);
 }
 
-void DistributedLoadElement::evaluate(const ElementInput& in, const ElementRequest& request,
-                                      ElementOutput& out) const {
+void DistributedLoadElement::compute(const ElementInput& in, const ElementRequest& request,
+                                     ElementOutput& out) const {
   const double scale = load_scale(in, history_);
   const int n = frame_dofs * static_cast<int>(blocks_.size());
   if (const auto* force = std::get_if<DistributedForce>(&load_)) {

@@ -16,8 +16,8 @@ PointMassElement::PointMassElement(const PointMassParameters& parameters)
     throw Error("mass " + std::to_string(parameters_.mass) + " is not positive", where, "give m > 0");
 }
 
-void PointMassElement::evaluate(const ElementInput& in, const ElementRequest& request,
-                                ElementOutput& out) const {
+void PointMassElement::compute(const ElementInput& in, const ElementRequest& request,
+                               ElementOutput& out) const {
   const Configuration& q = *in.q;
   const int b = blocks_[0], d = parameters_.dimension;
   if (q.is_frame(b) || q.blocks[b].size < d)

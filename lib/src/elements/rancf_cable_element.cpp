@@ -88,8 +88,8 @@ RancfCableElement<Dim>::RancfCableElement(const RancfCableParameters& parameters
 }
 
 template <int Dim>
-void RancfCableElement<Dim>::evaluate(const ElementInput& in, const ElementRequest& request,
-                                      ElementOutput& out) const {
+void RancfCableElement<Dim>::compute(const ElementInput& in, const ElementRequest& request,
+                                     ElementOutput& out) const {
   constexpr int n = 4 * Dim;
   const Configuration& q = *in.q;
   check_block_size(q, blocks_[0], 2 * Dim, "node", parameters_.name);
@@ -221,8 +221,8 @@ AleRancfCableElement<Dim>::AleRancfCableElement(const RancfCableParameters& para
 }
 
 template <int Dim>
-void AleRancfCableElement<Dim>::evaluate(const ElementInput& in, const ElementRequest& request,
-                                         ElementOutput& out) const {
+void AleRancfCableElement<Dim>::compute(const ElementInput& in, const ElementRequest& request,
+                                        ElementOutput& out) const {
   constexpr int n = 4 * Dim + 2;
   using Local = Eigen::Matrix<double, n, 1>;
   const Configuration& q = *in.q;

@@ -5,8 +5,8 @@ namespace spar::core {
 RigidBodyElement::RigidBodyElement(const RigidBody& body, int body_index)
     : body_(body), body_index_(body_index), blocks_{body.node} {}
 
-void RigidBodyElement::evaluate(const ElementInput& in, const ElementRequest& request,
-                                ElementOutput& out) const {
+void RigidBodyElement::compute(const ElementInput& in, const ElementRequest& request,
+                               ElementOutput& out) const {
   const Configuration& q = *in.q;
   // Weight: a dead force λ m g at the centre of mass, potential −λ m g · x.
   const Eigen::Vector3d weight = in.load_factor * body_.mass * in.gravity;

@@ -18,8 +18,8 @@ VectorLoadElement::VectorLoadElement(const Configuration& q, int block, Eigen::V
   if (!force_.allFinite()) throw Error("the force is not finite", where, "check the load");
 }
 
-void VectorLoadElement::evaluate(const ElementInput& in, const ElementRequest& request,
-                                 ElementOutput& out) const {
+void VectorLoadElement::compute(const ElementInput& in, const ElementRequest& request,
+                                ElementOutput& out) const {
   const double scale = load_scale(in, history_);
   if (request.residual) out.residual -= scale * force_;
   if (request.energy) out.external_force += scale * force_;  // its work: docs/dynamics.md D8

@@ -85,11 +85,13 @@ public:
 
   /// The blocks the element couples, in the order of its local vectors.
   virtual const std::vector<int>& blocks() const = 0;
-  /// Fills `out` (already reset to the element's size for `request`) at `in`. May throw
-  /// spar::Error for a configuration it cannot evaluate (e.g. a beam section turned by π): the
+  /// Fills `out` (already reset to the element's size for `request`) at `in`, after checking
+  /// `in` at this boundary (a spar::InputError names the element and the field): a
+  /// configuration that holds the element's blocks, a finite time, load factor and gravity, and a
+  /// velocity and acceleration, when given, of the configuration's size. May throw spar::Error
+  /// for a configuration the element cannot evaluate (e.g. a beam section turned by π): the
   /// solvers treat that as a failed iteration.
-  virtual void evaluate(const ElementInput& in, const ElementRequest& request,
-                        ElementOutput& out) const = 0;
+  void evaluate(const ElementInput& in, const ElementRequest& request, ElementOutput& out) const;
   /// A short name for messages ("beam 1, element 3").
   virtual std::string name() const = 0;
   /// True for an element whose residual holds an external force without a potential (a load):
@@ -98,6 +100,12 @@ public:
   /// residual untested) it evaluates these elements alone (docs/dynamics.md D8). An element that
   /// returns an external force must say so here, or its work is missing from such runs' balance.
   virtual bool has_external_force() const { return false; }
+
+private:
+  /// The element's own computation behind evaluate(), which has checked `in` (the
+  /// non-virtual-interface idiom: every element kind gets the same checks, no kernel repeats them).
+  virtual void compute(const ElementInput& in, const ElementRequest& request,
+                       ElementOutput& out) const = 0;
 };
 
 }  // namespace spar::core

@@ -151,8 +151,6 @@ public:
                   const Configuration& q0, int index);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override;
 
   const Tables& tables() const { return *tables_; }
@@ -167,6 +165,8 @@ public:
   Vector coordinates(const Configuration& q) const;
 
 private:
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   double gerstmayr_force(const Vector& e, Vector& Q, Matrix* K) const;
   double invariant_force(const Vector& e, Vector& Q, Matrix* K) const;
 

@@ -21,11 +21,11 @@ public:
   GeometricallyExactBeamElement(const GeometricallyExactBeam& beam, int beam_index, int e);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override;
 
 private:
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   const GeometricallyExactBeam* beam_;
   int beam_index_;
   int element_;

@@ -25,13 +25,13 @@ public:
   NodalLoadElement(const Load& load, std::function<double(double)> history, int load_index);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override { return "load " + std::to_string(load_index_); }
   bool has_external_force() const override { return true; }
   const Load& load() const { return load_; }
 
 private:
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   Load load_;
   std::function<double(double)> history_;
   int load_index_;
@@ -46,8 +46,6 @@ public:
                          std::function<double(double)> history, int load_index);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override {
     return "load " + std::to_string(load_index_) + " on element " + std::to_string(element_);
   }
@@ -55,6 +53,8 @@ public:
   const Load& load() const { return load_; }
 
 private:
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   Load load_;
   const GeometricallyExactBeam* beam_;
   int element_;

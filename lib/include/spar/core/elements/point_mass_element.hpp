@@ -24,12 +24,12 @@ public:
   explicit PointMassElement(const PointMassParameters& parameters);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  /// Throws spar::Error if the block is a frame or shorter than the dimension.
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override { return parameters_.name; }
 
 private:
+  /// Throws spar::Error if the block is a frame or shorter than the dimension.
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   PointMassParameters parameters_;
   std::vector<int> blocks_;
 };

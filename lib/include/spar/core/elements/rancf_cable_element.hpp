@@ -72,14 +72,14 @@ public:
   explicit RancfCableElement(const RancfCableParameters& parameters);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override { return parameters_.name; }
   const RancfCableParameters& parameters() const { return parameters_; }
   /// The constant 4×4 mass matrix m of the shape functions: M = m ⊗ I_Dim (000 eq. (19)).
   const Eigen::Matrix4d& shape_mass() const { return shape_mass_; }
 
 private:
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   RancfCableParameters parameters_;
   std::vector<int> blocks_;
   std::vector<rancf::QuadraturePoint> table_;
@@ -94,13 +94,13 @@ public:
   explicit AleRancfCableElement(const RancfCableParameters& parameters);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  /// Throws spar::Error when x_B ≤ x_A (an element turned inside out).
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override { return parameters_.name; }
   const RancfCableParameters& parameters() const { return parameters_; }
 
 private:
+  /// Throws spar::Error when x_B ≤ x_A (an element turned inside out).
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   RancfCableParameters parameters_;
   std::vector<int> blocks_;
   std::vector<rancf::QuadraturePoint> table_;

@@ -16,11 +16,11 @@ public:
   RigidBodyElement(const RigidBody& body, int body_index);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override { return "rigid body " + std::to_string(body_index_); }
 
 private:
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   RigidBody body_;
   int body_index_;
   std::vector<int> blocks_;

@@ -20,12 +20,12 @@ public:
                     std::function<double(double)> history, int load_index);
 
   const std::vector<int>& blocks() const override { return blocks_; }
-  void evaluate(const ElementInput& in, const ElementRequest& request,
-                ElementOutput& out) const override;
   std::string name() const override { return "vector load " + std::to_string(load_index_); }
   bool has_external_force() const override { return true; }
 
 private:
+  void compute(const ElementInput& in, const ElementRequest& request,
+               ElementOutput& out) const override;
   std::vector<int> blocks_;
   Eigen::VectorXd force_;
   std::function<double(double)> history_;
