@@ -47,6 +47,18 @@ core::RigidBodyParameters top() {
           .inertia = Eigen::Vector3d(0.234375, 0.46875, 0.234375).asDiagonal()};
 }
 
+/// Evaluates the cantilever's first element (a beam element) at the input `change` makes of a
+/// good static one: Element::evaluate checks its input at this boundary.
+void evaluate_element(const std::function<void(core::ElementInput&)>& change) {
+  Cantilever c;
+  core::ElementInput in{.q = &c.model.state(), .gravity = Eigen::Vector3d(0, 0, -9.81)};
+  change(in);
+  const core::Element& element = c.model.element(0);
+  core::ElementOutput out;
+  out.reset(core::frame_dofs * static_cast<int>(element.blocks().size()), {.residual = true});
+  element.evaluate(in, {.residual = true}, out);
+}
+
 /// A few dynamic steps of the cantilever under `options` with a tip force of the given history.
 void run_dynamics(const solvers::DynamicOptions& options, core::LoadHistory history = {}) {
   Cantilever c;
@@ -148,6 +160,36 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
          integrator.set_velocity(c.tip, Eigen::Vector3d(not_a_number, 0, 0), Eigen::Vector3d::Zero());
        },
        "NaN"},
+      {"an element evaluated at a NaN load factor",
+       [] { evaluate_element([](core::ElementInput& in) { in.load_factor = not_a_number; }); },
+       "the load factor is nan"},
+      {"an element evaluated at an infinite time",
+       [] { evaluate_element([](core::ElementInput& in) { in.time = infinite; }); },
+       "the time is inf"},
+      {"an element evaluated with a NaN gravity",
+       [] { evaluate_element([](core::ElementInput& in) { in.gravity.y() = not_a_number; }); },
+       "gravity has a non-finite component"},
+      {"an element evaluated without a configuration",
+       [] { evaluate_element([](core::ElementInput& in) { in.q = nullptr; }); },
+       "ElementInput::q is null"},
+      {"an element evaluated in another model's configuration",
+       [] {
+         static const core::Configuration other;
+         evaluate_element([](core::ElementInput& in) { in.q = &other; });
+       },
+       "is not in the configuration (0 blocks)"},
+      {"an element evaluated with a velocity and no acceleration",
+       [] {
+         static const Eigen::VectorXd v;
+         evaluate_element([](core::ElementInput& in) { in.velocity = &v; });
+       },
+       "only one of velocity and acceleration"},
+      {"an element evaluated with a velocity of the wrong size",
+       [] {
+         static const Eigen::VectorXd v = Eigen::VectorXd::Zero(5);
+         evaluate_element([](core::ElementInput& in) { in.velocity = in.acceleration = &v; });
+       },
+       "the velocity has 5 and the acceleration 5 entries"},
       // Found by the fuzz test (tests/input/fuzz_test.cpp).
       {"degree elevation across a discontinuity (read past its arrays)",
        [] { iga::degree_elevation_operator(iga::KnotVector({0, 0, 0.5, 0.5, 1, 1}, 1), 1); }, "multiplicity p + 1"},
