@@ -4,7 +4,8 @@
 # the missing packages. Needs root (or sudo) only when something is missing.
 #   scripts/setup.sh          what building and running spar needs (scripts/run.sh)
 #   scripts/setup.sh --test   and what the tests need besides (scripts/test.sh): ParaView's
-#                             pvpython under a virtual X server, which opens an example's results
+#                             pvpython under a virtual X server, which opens an example's results,
+#                             and clang for the sanitizer build and the libFuzzer targets
 set -euo pipefail
 
 packages=(
@@ -22,6 +23,7 @@ case "${1:-}" in
     packages+=(
       paraview python3-paraview  # ParaView and its pvpython (the results-file test, label paraview)
       xvfb xauth                 # xvfb-run: a virtual X server for pvpython's rendering
+      clang libclang-rt-dev libomp-dev  # the sanitizer build and libFuzzer (clang's OpenMP)
     ) ;;
   *) echo "setup: unknown option '$1' (use --test or nothing)" >&2; exit 2 ;;
 esac
