@@ -16,7 +16,6 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
-#include <cmath>
 #include <functional>
 #include <limits>
 #include <memory>
