@@ -23,6 +23,7 @@ case "${1:-}" in
     packages+=(
       paraview python3-paraview  # ParaView and its pvpython (the results-file test, label paraview)
       xvfb xauth                 # xvfb-run: a virtual X server for pvpython's rendering
+      libxml2-utils              # xmllint: the XDMF sidecars are well-formed XML (tests/output, tests/examples)
       clang libclang-rt-dev libomp-dev  # the sanitizer build and libFuzzer (clang's OpenMP)
     ) ;;
   *) echo "setup: unknown option '$1' (use --test or nothing)" >&2; exit 2 ;;

@@ -60,10 +60,12 @@ GeometricallyExactBeam::GeometricallyExactBeam(const BeamParameters& parameters,
                 where, "give one reference rotation per control point, or none");
   for (const Eigen::Matrix3d& R : frames) lie::check_rotation(R, where);
 
+  // The elements first: their refusals (a Gauss rule too large, a centerline of zero speed) must
+  // leave the configuration without the beam's nodes.
+  build_elements(parameters.quadrature_points);
   first_node_ = configuration.block_count();
   for (int I = 0; I < control_point_count_; ++I)
     configuration.add_frame(centerline_.control_points().col(I), frames[I]);
-  build_elements(parameters.quadrature_points);
   compute_reference_strains(configuration);
 }
 

@@ -21,9 +21,10 @@ struct FlexiblePendulum {
 };
 
 /// The pendulum with `elements` cubic elements; its tip is model.beam(0).position_at(q, 1).
-inline FlexiblePendulum flexible_pendulum(int elements) {
+/// `stiffening` multiplies Young's modulus (1e6: a practically rigid rod of the same mass).
+inline FlexiblePendulum flexible_pendulum(int elements, double stiffening = 1.0) {
   const double length = 1.0, width = 0.03, thickness = 0.001;
-  const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
+  const core::Material steel{.young_modulus = 2.1e11 * stiffening, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection section = core::CrossSection::rectangle(width, thickness, steel.poisson_ratio);
   FlexiblePendulum p;
   p.model.add_beam({.centerline = straight_centerline(length, elements, 3),
