@@ -60,7 +60,9 @@ TopRun run_top(double h, long steps, double rho) {
 
 }  // namespace
 
-TEST_CASE("heavy top: the RK4 reference is accurate to 1e-11", "[dynamics][validation]") {
+// Not tagged validation: it checks the test's own reference (RK4 against itself at half the step),
+// which the convergence test below then compares spar with.
+TEST_CASE("heavy top: the RK4 reference is accurate to 1e-11", "[dynamics]") {
   // RK4 error ~ h⁴: halving its step changes the result by 15/16 of the coarser step's error.
   const top::TopReference reference(top::classic_top());
   top::TopState a{.angular_velocity = initial_omega}, b = a;

@@ -25,7 +25,8 @@ struct SampledRun {
 
 }  // namespace
 
-TEST_CASE("time sampler: every 1 ms from h = 3e-4 s, exact for a falling body spinning steadily", "[dynamics]") {
+TEST_CASE("time sampler: every 1 ms from h = 3e-4 s, exact for a falling body spinning steadily",
+          "[dynamics][validation]") {
   // A symmetric body spinning about its symmetry axis feels no gyroscopic moment: R = R₀ exp(Ω t),
   // x = x₀ + v₀ t + ½ g t². Generalized-α from consistent accelerations reproduces both, and the
   // cubic Hermite interpolation is exact for them: round-off of ~170 steps, bound 1e-12.

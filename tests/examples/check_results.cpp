@@ -91,7 +91,6 @@ int main(int argc, char** argv) try {
       for (int part = 0; part < 2; ++part)
         speed_scale[part] = std::max(speed_scale[part],
                                      Eigen::Vector3d(&velocities.values[6 * k + 3 * part]).norm());
-    double worst_ratio = 0.0;
     for (std::size_t s = 0; s + 1 < steps; ++s) {
       const double h = time.values[s + 1] - time.values[s];
       for (std::size_t i = 0; i < nodes; ++i) {

@@ -1,6 +1,8 @@
 # Script mode: run EXAMPLE with ARGS and --out OUT, read the JSON object on its last stdout line,
 # and check each BOUNDS entry "key<value" or "key>value" (numbers compared by CMake's LESS and
-# GREATER). A failed bound fails the test, with the summary shown.
+# GREATER). Each of FILES (names in OUT) must then exist and not be empty, and with XMLLINT every
+# XDMF sidecar in OUT must be well-formed XML. A failed bound or check fails the test, with the
+# summary shown.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${EXAMPLE} ${ARGS} --out ${OUT} RESULT_VARIABLE status OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
@@ -24,3 +26,19 @@ foreach(bound IN LISTS BOUNDS)
     message(FATAL_ERROR "${key} = ${value}, expected > ${limit}")
   endif()
 endforeach()
+foreach(name IN LISTS FILES)
+  if(NOT EXISTS ${OUT}/${name})
+    message(FATAL_ERROR "the example wrote no ${name} in ${OUT}")
+  endif()
+  file(SIZE ${OUT}/${name} size)
+  if(size EQUAL 0)
+    message(FATAL_ERROR "the example's ${name} is empty")
+  endif()
+endforeach()
+file(GLOB sidecars ${OUT}/*.xmf ${OUT}/*.xdmf)
+if(sidecars AND XMLLINT)
+  execute_process(COMMAND ${XMLLINT} --noout ${sidecars} RESULT_VARIABLE status ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "an XDMF sidecar is not well-formed XML (xmllint):\n${err}")
+  endif()
+endif()

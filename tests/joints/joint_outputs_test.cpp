@@ -50,7 +50,8 @@ solvers::DynamicOptions options() { return {.time_step = 1e-3, .tolerance = 1e-2
 
 }  // namespace
 
-TEST_CASE("revolute reaction: a body held by its hinge against gravity along the axis", "[joints]") {
+TEST_CASE("revolute reaction: a body held by its hinge against gravity along the axis",
+          "[joints][validation]") {
   // Gravity −g e_z along the hinge: the body rests (nothing turns it about Z), and the hinge
   // carries its weight, F = (0, 0, m g) on the body, and the moment of the weight about the
   // hinge, M = −(L e_x) × (−m g e_z) = (0, −m g L, 0). Round-off of the 11 × 11 solve: 1e-12 of
@@ -80,7 +81,7 @@ TEST_CASE("revolute reaction: a body held by its hinge against gravity along the
   }
 }
 
-TEST_CASE("revolute reaction: a horizontal pendulum released at rest", "[joints]") {
+TEST_CASE("revolute reaction: a horizontal pendulum released at rest", "[joints][validation]") {
   // Gravity −g e_y, the body horizontal at rest: at t = 0 it turns with α = −m g L/(J + m L²)
   // about Z, its centre accelerates by α L along Y, and the hinge pushes it up with
   // F_y = m (α L + g) = m g J/(J + m L²) (no force along X: no velocity yet).

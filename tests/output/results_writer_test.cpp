@@ -18,8 +18,8 @@ namespace {
 
 constexpr int sample_steps = 5;
 
-/// Every value is copied, not computed, so the round trip must be exact; the quaternions are
-/// computed by the same function on both sides.
+/// Every value but the quaternions is copied, not computed, so the round trip must be exact; the
+/// quaternions are checked against the stored rotations through an independent formula.
 void check_round_trip(const ReadOnlyFile& file, int steps) {
   const auto S = static_cast<hsize_t>(steps);
   const DatasetContents time = file.read("/time"), positions = file.read("/positions"),

@@ -87,8 +87,10 @@ TEST_CASE("truss deployment: the cosine law deploys the unit, each driver hands 
   CHECK(releases == 4);
 }
 
+// Not tagged validation: 003's Figure 8 gives no numbers, so the lock times below are our own
+// measurements (a regression check) and the rest is qualitative (lock order, mirror symmetry).
 TEST_CASE("truss deployment under gravity (003 case 1): the bays unfold and lock, the mirror sides together",
-          "[truss][dynamics][validation]") {
+          "[truss][dynamics]") {
   Run run;
   build(run, "", 0.0, 0.1);
   double largest_residual = 0.0, dissipation_before_lock = 0.0, work_before_lock = 0.0;
