@@ -89,13 +89,16 @@ inline FourBar build_four_bar(int elements, const FourBarGeometry& geometry = {}
   f.rocker_root = rocker.node(0);
   f.rocker_tip = rocker.node(rocker.control_point_count() - 1);
 
+  // The coupler's body frame: X along B → C, Z along the pivots' axis (the results draw it as a
+  // bar along its X).
   const double mass = 0.5, radius = 0.005;
   const Eigen::Vector3d along = (C - B).normalized();
+  Eigen::Matrix3d frame;
+  frame << along, Eigen::Vector3d::UnitZ().cross(along), Eigen::Vector3d::UnitZ();
   const double across = mass * geometry.coupler * geometry.coupler / 12, axial = mass * radius * radius / 2;
-  const Eigen::Matrix3d inertia_tensor =
-      across * (Eigen::Matrix3d::Identity() - along * along.transpose()) + axial * along * along.transpose();
   f.coupler_node = f.model.rigid_body(f.model.add_rigid_body(
-      {.center_of_mass = 0.5 * (B + C), .mass = mass, .inertia = inertia_tensor})).node;
+      {.center_of_mass = 0.5 * (B + C), .rotation = frame, .mass = mass,
+       .inertia = Eigen::Vector3d(axial, across, across).asDiagonal().toDenseMatrix()})).node;
   f.model.set_gravity(Eigen::Vector3d(0, -9.81, 0));
 
   const core::Configuration& q0 = f.model.state();
