@@ -11,7 +11,7 @@
 
 namespace spar::examples {
 
-/// The link lengths [m] and the drive.
+/// The link lengths [m], the drive and the rods' stiffness.
 struct FourBarGeometry {
   double ground = 0.4;   ///< A = (0, 0, 0) to D = (ground, 0, 0)
   double crank = 0.1;    ///< A to B
@@ -19,6 +19,7 @@ struct FourBarGeometry {
   double rocker = 0.3;   ///< D to C
   double initial_crank_angle = std::numbers::pi / 3;  ///< θ(0) from +X [rad]
   double crank_rate = 10.0;                           ///< θ̇ [rad/s]
+  double young_modulus = 210e9;                       ///< the rods' E [Pa] (steel)
 };
 
 /// The rigid four-bar's closure: for a crank angle θ, B = crank (cos θ, sin θ) and C the
@@ -74,7 +75,7 @@ inline FourBar build_four_bar(int elements, const FourBarGeometry& geometry = {}
   f.rigid.g = geometry;
   const double theta0 = geometry.initial_crank_angle;
   const Eigen::Vector3d A(0, 0, 0), B = f.rigid.b(theta0), C = f.rigid.c(theta0), D(geometry.ground, 0, 0);
-  const core::Material steel{.young_modulus = 210e9, .poisson_ratio = 0.3, .density = 7850};
+  const core::Material steel{.young_modulus = geometry.young_modulus, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection rod = core::CrossSection::circle(0.010, steel.poisson_ratio);
   const core::SectionStiffness stiffness = core::SectionStiffness::from(steel, rod);
   const core::SectionInertia inertia = core::SectionInertia::from(steel, rod);

@@ -274,6 +274,7 @@ struct GeneralizedAlpha::Implementation {
     } else {
       consistent_accelerations(false);
     }
+    if (!initialized && options.perturbed_starting_values) perturb_starting_values();
     if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
     evaluate(t, nullptr, 1.0);
     // The balance starts at t = 0 with the consistent accelerations.
@@ -333,6 +334,40 @@ struct GeneralizedAlpha::Implementation {
       throw Error("the consistent accelerations are not finite at t = " + significant(t),
                   "solvers::GeneralizedAlpha",
                   "check the model's masses, loads and velocities for NaN or infinite values");
+  }
+
+  /// Perturbed starting values (DynamicOptions::perturbed_starting_values, docs/dynamics.md
+  /// D6d). The method's smooth numerical solution has a_n = v̇(t_n) + Δ_α h v̈(t_n) + O(h²) and
+  /// v_n = v(t_n) + c_v h² v̈(t_n) + O(h³), Δ_α = α_m − α_f, c_v = 1/6 − β − Δ_α/2 (the update
+  /// relations of D3 expanded about an exact trajectory, derived there; cf. Arnold & Brüls 2007,
+  /// Arnold, Brüls & Cardona 2015). Started from a₀ = v̇₀, v₀ = v(t₀), the index-3 method turns
+  /// the O(h²) velocity offset along the constraints into an O(h) acceleration and multiplier
+  /// transient that decays like (−ρ∞)ⁿ; started on the smooth solution it has none. v̈₀ is the
+  /// difference quotient (v̇₁ − v̇₀)/h of the consistent accelerations at t₀ and at the end of one
+  /// auxiliary step of h from the unperturbed values (its v₁ is O(h²) off, so v̈₀ is O(h) off and
+  /// the starting values O(h²) and O(h³) off). The auxiliary step is undone; its Newton
+  /// iterations and factorizations stay in the counters. Rotations: exact for rotations about a
+  /// fixed axis; a spatial rotation has a further O(h²) term in v₀ (D6d, open).
+  void perturb_starting_values() {
+    const double h = options.time_step;
+    Snapshot initial;
+    save(initial);
+    // The step books its work against the forces at its start, which initialize() sets only
+    // afterwards; the auxiliary step's work is discarded with it.
+    last_work_force = Eigen::VectorXd::Zero(assembly.dof_count());
+    if (!try_step(h, Predictor::extrapolated) && !try_step(h, Predictor::velocity_only))
+      throw Error("the auxiliary step of the perturbed starting values did not converge at t = " +
+                      significant(t) + " (h = " + significant(h) + "): " + last_failure,
+                  "solvers::GeneralizedAlpha::initialize",
+                  "reduce the time step, or switch DynamicOptions::perturbed_starting_values off");
+    consistent_accelerations(false);
+    const Eigen::VectorXd vdot_next = acceleration;
+    restore(initial);
+    const double delta_alpha = alpha.alpha_m - alpha.alpha_f;
+    const Eigen::VectorXd vddot = (vdot_next - acceleration) / h;
+    algorithmic_acceleration = acceleration + delta_alpha * h * vddot;
+    velocity += h * h * (1.0 / 6.0 - alpha.beta - 0.5 * delta_alpha) * vddot;
+    for (int dof : model.fixed_dofs()) algorithmic_acceleration(dof) = velocity(dof) = 0.0;
   }
 
   /// Moves the positions onto Φ(q, t) = 0 by Gauss–Newton on the least change in the metric of
