@@ -159,3 +159,17 @@ TEST_CASE("initial assembly: on a rigid mechanism the metric M + tau^2 K is the 
   }
   CHECK((velocities[1] - velocities[0]).lpNorm<Eigen::Infinity>() <= 1e-13 * omega);
 }
+
+TEST_CASE("perturbed starting values: an auxiliary step that fails is an error naming the option", "[dynamics]") {
+  // One Newton iteration does not converge the pendulum's first step under gravity (the test
+  // needs an iteration after the increment): the auxiliary step of the perturbed start fails,
+  // and initialize() says so.
+  Pendulum p = pendulum();
+  solvers::DynamicOptions perturbed = options();
+  perturbed.max_iterations = 1;
+  perturbed.perturbed_starting_values = true;
+  solvers::GeneralizedAlpha integrator(p.model, std::move(p.joints), perturbed);
+  CHECK_THROWS_WITH(integrator.initialize(),
+                    Catch::Matchers::Contains("auxiliary step of the perturbed starting values did not converge") &&
+                        Catch::Matchers::Contains("perturbed_starting_values off"));
+}
