@@ -291,8 +291,12 @@ struct GeneralizedAlpha::Implementation {
   }
 
   /// Assembles [M Bᵀ; B 0] at the current state (the residual then holds [r ; Φ]) and factorizes
-  /// it with the Dirichlet conditions. It is not an iteration matrix.
+  /// it with the Dirichlet conditions. It is not an iteration matrix. Its chart is the current
+  /// state: with the last step's increment left in it, B came out as B T(hΔq), and the
+  /// accelerations of initialize() during a run missed the joints by ½ h (Ω × v̇) (tests/dynamics/
+  /// heavy_top_test.cpp, "initialize() during a run …").
   void factorize_mass_and_constraints() {
+    increment.setZero();
     const MatrixCoefficients mass_only{.mass = 1.0, .damping = 0.0, .stiffness = 0.0};
     evaluate(t, &mass_only, 1.0, true);
     factorize(t);
