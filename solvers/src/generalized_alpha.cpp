@@ -350,8 +350,8 @@ struct GeneralizedAlpha::Implementation {
   /// difference quotient (v̇₁ − v̇₀)/h of the consistent accelerations at t₀ and at the end of one
   /// auxiliary step of h from the unperturbed values (its v₁ is O(h²) off, so v̈₀ is O(h) off and
   /// the starting values O(h²) and O(h³) off). The auxiliary step is undone; its Newton
-  /// iterations and factorizations stay in the counters. Rotations: exact for rotations about a
-  /// fixed axis; a spatial rotation has a further O(h²) term in v₀ (D6d, open).
+  /// iterations and factorizations stay in the counters. A frame's rotation adds h²/12 Ω × Ω̇ to
+  /// its velocity (from log(R(t)ᵀR(t + h)), D6d).
   void perturb_starting_values() {
     const double h = options.time_step;
     Snapshot initial;
@@ -370,7 +370,16 @@ struct GeneralizedAlpha::Implementation {
     const double delta_alpha = alpha.alpha_m - alpha.alpha_f;
     const Eigen::VectorXd vddot = (vdot_next - acceleration) / h;
     algorithmic_acceleration = acceleration + delta_alpha * h * vddot;
-    velocity += h * h * (1.0 / 6.0 - alpha.beta - 0.5 * delta_alpha) * vddot;
+    // A frame's rotation also has log(R(t)ᵀR(t + h)) = … + h³/12 Ω × Ω̇ (D6d): its velocity the
+    // extra h²/12 Ω × Ω̇.
+    Eigen::VectorXd offset = h * h * (1.0 / 6.0 - alpha.beta - 0.5 * delta_alpha) * vddot;
+    for (int b = 0; b < model.state().block_count(); ++b)
+      if (model.state().is_frame(b)) {
+        const int rotation = model.state().blocks[b].offset + 3;
+        offset.segment<3>(rotation) +=
+            h * h / 12.0 * velocity.segment<3>(rotation).cross(acceleration.segment<3>(rotation));
+      }
+    velocity += offset;
     for (int dof : model.fixed_dofs()) algorithmic_acceleration(dof) = velocity(dof) = 0.0;
   }
 
