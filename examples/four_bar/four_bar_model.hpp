@@ -11,7 +11,7 @@
 
 namespace spar::examples {
 
-/// The link lengths [m] and the drive.
+/// The link lengths [m], the drive and the rods' stiffness.
 struct FourBarGeometry {
   double ground = 0.4;   ///< A = (0, 0, 0) to D = (ground, 0, 0)
   double crank = 0.1;    ///< A to B
@@ -19,6 +19,7 @@ struct FourBarGeometry {
   double rocker = 0.3;   ///< D to C
   double initial_crank_angle = std::numbers::pi / 3;  ///< θ(0) from +X [rad]
   double crank_rate = 10.0;                           ///< θ̇ [rad/s]
+  double young_modulus = 210e9;                       ///< the rods' E [Pa] (steel)
 };
 
 /// The rigid four-bar's closure: for a crank angle θ, B = crank (cos θ, sin θ) and C the
@@ -74,7 +75,7 @@ inline FourBar build_four_bar(int elements, const FourBarGeometry& geometry = {}
   f.rigid.g = geometry;
   const double theta0 = geometry.initial_crank_angle;
   const Eigen::Vector3d A(0, 0, 0), B = f.rigid.b(theta0), C = f.rigid.c(theta0), D(geometry.ground, 0, 0);
-  const core::Material steel{.young_modulus = 210e9, .poisson_ratio = 0.3, .density = 7850};
+  const core::Material steel{.young_modulus = geometry.young_modulus, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection rod = core::CrossSection::circle(0.010, steel.poisson_ratio);
   const core::SectionStiffness stiffness = core::SectionStiffness::from(steel, rod);
   const core::SectionInertia inertia = core::SectionInertia::from(steel, rod);
@@ -89,13 +90,16 @@ inline FourBar build_four_bar(int elements, const FourBarGeometry& geometry = {}
   f.rocker_root = rocker.node(0);
   f.rocker_tip = rocker.node(rocker.control_point_count() - 1);
 
+  // The coupler's body frame: X along B → C, Z along the pivots' axis (the results draw it as a
+  // bar along its X).
   const double mass = 0.5, radius = 0.005;
   const Eigen::Vector3d along = (C - B).normalized();
+  Eigen::Matrix3d frame;
+  frame << along, Eigen::Vector3d::UnitZ().cross(along), Eigen::Vector3d::UnitZ();
   const double across = mass * geometry.coupler * geometry.coupler / 12, axial = mass * radius * radius / 2;
-  const Eigen::Matrix3d inertia_tensor =
-      across * (Eigen::Matrix3d::Identity() - along * along.transpose()) + axial * along * along.transpose();
   f.coupler_node = f.model.rigid_body(f.model.add_rigid_body(
-      {.center_of_mass = 0.5 * (B + C), .mass = mass, .inertia = inertia_tensor})).node;
+      {.center_of_mass = 0.5 * (B + C), .rotation = frame, .mass = mass,
+       .inertia = Eigen::Vector3d(axial, across, across).asDiagonal().toDenseMatrix()})).node;
   f.model.set_gravity(Eigen::Vector3d(0, -9.81, 0));
 
   const core::Configuration& q0 = f.model.state();

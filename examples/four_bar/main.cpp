@@ -122,7 +122,11 @@ int main(int argc, char** argv) try {
                                           {.name = "pivot_d_force", .unit = "N",
                                            .description = "force of pivot D on the rocker, in the joint's frame"}},
                                .centerline_points = {samples, samples},
-                               .centerline_fields = examples::centerline_field_layout()});
+                               .centerline_fields = examples::centerline_field_layout(),
+                               // The coupler drawn as a bar B → C (its body X) of 2 cm square section.
+                               .rigid_bodies = {{.node = mechanism.coupler_node,
+                                                 .kind = core::RigidBodyShape::Kind::box,
+                                                 .size = {rigid.g.coupler, 0.02, 0.02}}}});
   results.write_attribute("example", "four_bar (issue 14)");
   results.write_attribute("time_step", h);
   results.write_attribute("initial_assembly", assembly);

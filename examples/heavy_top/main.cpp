@@ -83,6 +83,7 @@ int main(int argc, char** argv) try {
   const double initial_energy = reference.energy(exact);
 
   // 7. Integrate and record.
+  const double plate = std::sqrt(12.0 * top.inertia(0, 0) / top.mass);
   core::ResultsWriter results(out + "/heavy_top.h5",
                               {.node_count = model.block_count(),
                                .multiplier_count = integrator.multiplier_count(),
@@ -100,7 +101,16 @@ int main(int argc, char** argv) try {
                                             .integer = true}},
                                            examples::energy_balance_layout()),
                                .probes = {{.name = "reference_center_of_mass", .unit = "m",
-                                           .description = "the centre of mass of the RK4 reference, inertial frame"}}});
+                                           .description = "the centre of mass of the RK4 reference, inertial frame"}},
+                               // The top drawn as a square plate of edge a at its centre of mass — a thin
+                               // plate has I_X = I_Z = m a²/12, I_Y = m a²/6, the top's inertia for
+                               // a = √(12 I_X/m) = 0.433 m (1 cm thick, to be seen) — on a stick from
+                               // the fixed point (body −Y from the centre of mass) to it.
+                               .rigid_bodies = {{.node = body, .kind = core::RigidBodyShape::Kind::box,
+                                                 .size = {plate, 0.01, plate}},
+                                                {.node = body, .kind = core::RigidBodyShape::Kind::box,
+                                                 .size = {0.02, top.center_of_mass.norm(), 0.02},
+                                                 .offset = -0.5 * top.center_of_mass}}});
   results.write_attribute("example", "heavy_top (Bruls, Cardona & Arnold 2012, section 5.1)");
   results.write_attribute("time_step", h);
   results.write_attribute("rho_infinity", rho_infinity);

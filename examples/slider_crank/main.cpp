@@ -120,7 +120,10 @@ int main(int argc, char** argv) try {
                                           {.name = "rod1_tip", .unit = "m",
                                            .description = "Rod I's tip (its last node), inertial frame"}},
                                .centerline_points = {samples, samples},
-                               .centerline_fields = examples::centerline_field_layout()});
+                               .centerline_fields = examples::centerline_field_layout(),
+                               // The slider drawn as the 2 cm cube its inertia m s²/6 stands for.
+                               .rigid_bodies = {{.node = slider, .kind = core::RigidBodyShape::Kind::box,
+                                                 .size = {0.02, 0.02, 0.02}}}});
   results.write_attribute("example", "slider_crank (003 section 5.1)");
   results.write_attribute("time_step", h);
   results.write_attribute("strategy", strategy);

@@ -6,6 +6,8 @@
 #include <spar/error.hpp>
 #include <spar/lie/quaternion.hpp>
 
+#include <Eigen/Geometry>
+
 #include <hdf5.h>
 #include <unistd.h>
 
@@ -106,6 +108,28 @@ void check_quantity(const ResultsQuantity& quantity, const std::string& field, s
                 where, "state its SI unit (\"1\" for ratios and counts) and what it is: the file carries both");
 }
 
+/// Shapes drawn at nodes that exist, of sizes a shape can have: a box's edges and given axis
+/// lengths positive, unset axis lengths all zero; every number finite.
+void check_rigid_bodies(const ResultsLayout& layout, const std::string& where) {
+  for (std::size_t k = 0; k < layout.rigid_bodies.size(); ++k) {
+    const RigidBodyShape& shape = layout.rigid_bodies[k];
+    const std::string entry = "layout.rigid_bodies[" + std::to_string(k) + "]";
+    if (shape.node < 0 || shape.node >= layout.node_count)
+      throw Error(entry + ".node = " + std::to_string(shape.node) + " is not a node of the layout (node_count = " +
+                      std::to_string(layout.node_count) + ")",
+                  where, "pass the body's node, e.g. model.rigid_body(b).node, and the model's node count");
+    const bool box = shape.kind == RigidBodyShape::Kind::box;
+    const bool positive = (shape.size.array() > 0.0).all() && shape.size.allFinite();
+    if (!shape.offset.allFinite() || !(positive || (!box && shape.size.isZero(0.0))))
+      throw Error(entry + " has size (" + format_double(shape.size.x()) + ", " + format_double(shape.size.y()) + ", " +
+                      format_double(shape.size.z()) + ") m or an offset that is not finite",
+                  where,
+                  box ? "give the box's three edge lengths in m, all positive"
+                      : "give the three axis lengths in m, all positive, or leave them all zero for a tenth of the "
+                        "model's extent");
+  }
+}
+
 /// Checks the layout's counts and names; throws spar::Error naming the field.
 void check_layout(const ResultsLayout& layout, int flush_every, const std::string& where) {
   if (layout.node_count < 0 || layout.multiplier_count < 0)
@@ -140,6 +164,25 @@ void check_layout(const ResultsLayout& layout, int flush_every, const std::strin
                       " components",
                   where, "give a scalar (1 component) or a vector (3 components) per point");
   }
+  check_rigid_bodies(layout, where);
+}
+
+/// The vertices of `shape` in its body's material frame (columns), `length` the axes' length
+/// where the shape leaves it to the model: a box's 8 corners in VTK's hexahedron order (the face
+/// z = −½ counterclockwise seen from +z, then the face z = +½), or the axes as 3 segments
+/// (origin, end) along X, Y, Z.
+Eigen::Matrix3Xd shape_vertices(const RigidBodyShape& shape, double length) {
+  if (shape.kind == RigidBodyShape::Kind::box) {
+    Eigen::Matrix<double, 3, 8> corners;
+    corners << -1, 1, 1, -1, -1, 1, 1, -1,  //
+        -1, -1, 1, 1, -1, -1, 1, 1,         //
+        -1, -1, -1, -1, 1, 1, 1, 1;
+    return (0.5 * shape.size.asDiagonal() * corners).colwise() + shape.offset;
+  }
+  const Eigen::Vector3d lengths = shape.size.isZero(0.0) ? Eigen::Vector3d::Constant(length) : shape.size;
+  Eigen::Matrix3Xd ends = Eigen::Matrix3Xd::Zero(3, 6);
+  for (int axis = 0; axis < 3; ++axis) ends(axis, 2 * axis + 1) = lengths(axis);
+  return ends.colwise() + shape.offset;
 }
 
 /// `path` with its extension replaced by `.xmf`.
@@ -159,6 +202,11 @@ struct ResultsWriter::Impl {
   int positions = -1, quaternions = -1, velocities = -1, multipliers = -1;
   int first_scalar = 0, first_probe = 0, first_centerline = 0;
   int first_field = 0;  ///< field f of beam k is series first_field + f × beams + k
+  int first_rigid_body = 0;           ///< the vertices of shape k are series first_rigid_body + k
+  int first_rigid_body_velocity = -1;  ///< their velocities series first_rigid_body_velocity + k, if any
+  /// Per shape, its vertices in the body's frame: set at the first append, where an axes' default
+  /// length takes the model's extent.
+  std::vector<Eigen::Matrix3Xd> shape_corners;
   double last_time = 0;        ///< the last appended step's time
   std::unique_ptr<detail::XdmfSidecar> sidecar;
   int appended = 0;
@@ -223,7 +271,24 @@ struct ResultsWriter::Impl {
         add_series("/centerline_fields/" + field.name + "/beam" + std::to_string(k), field.unit,
                    field.description + " (beam " + std::to_string(k) + ", at its centerline points)", shape);
       }
+    first_rigid_body = static_cast<int>(series.size());
+    for (std::size_t k = 0; k < layout.rigid_bodies.size(); ++k)
+      add_series("/rigid_bodies/body" + std::to_string(k), "m",
+                 "vertices x + R c of shape " + std::to_string(k) + " (layout.rigid_bodies) at node " +
+                     std::to_string(layout.rigid_bodies[k].node) +
+                     " (inertial frame): a box's 8 corners in VTK hexahedron order, or the axes' 3 segments "
+                     "(origin, end) along material X, Y, Z",
+                 {static_cast<hsize_t>(vertex_count(layout.rigid_bodies[k])), 3});
+    if (layout.velocities && !layout.rigid_bodies.empty()) {
+      first_rigid_body_velocity = static_cast<int>(series.size());
+      for (std::size_t k = 0; k < layout.rigid_bodies.size(); ++k)
+        add_series("/rigid_body_fields/velocity/body" + std::to_string(k), "m/s",
+                   "velocity x dot + R (Omega x c) of each vertex of shape " + std::to_string(k) + " (inertial frame)",
+                   {static_cast<hsize_t>(vertex_count(layout.rigid_bodies[k])), 3});
+    }
   }
+
+  static int vertex_count(const RigidBodyShape& shape) { return shape.kind == RigidBodyShape::Kind::box ? 8 : 6; }
 
   void create_file() {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
@@ -283,6 +348,15 @@ struct ResultsWriter::Impl {
       write_ints("/xdmf/polyline" + std::to_string(k), indices(p), {1, static_cast<hsize_t>(p)},
                  "point indices 0 ... P-1 of beam " + std::to_string(k) + "'s polyline in the XDMF sidecar");
     }
+    const auto drawn = [&](RigidBodyShape::Kind kind) {
+      return std::any_of(layout.rigid_bodies.begin(), layout.rigid_bodies.end(),
+                         [kind](const RigidBodyShape& shape) { return shape.kind == kind; });
+    };
+    if (drawn(RigidBodyShape::Kind::box))
+      write_ints("/xdmf/hexahedron", indices(8), {1, 8}, "vertex indices 0 ... 7 of a box's hexahedron in the XDMF sidecar");
+    if (drawn(RigidBodyShape::Kind::axes))
+      write_ints("/xdmf/axes", indices(6), {3, 2},
+                 "vertex indices of the axes' three segments (0 1, 2 3, 4 5: X, Y, Z) in the XDMF sidecar");
     if (layout.node_count > 0)
       write_ints("/xdmf/polyvertex", indices(layout.node_count), {static_cast<hsize_t>(layout.node_count)},
                  "point indices 0 ... n-1 of the nodes' point cloud in the XDMF sidecar");
@@ -440,6 +514,45 @@ struct ResultsWriter::Impl {
       series[static_cast<std::size_t>(velocities)].push(step.velocity->data(), static_cast<std::size_t>(step.velocity->size()));
   }
 
+  /// The shapes' vertices in their bodies' frames, at the first step: an axes' default length is
+  /// a tenth of the diagonal of the box bounding the step's nodes and centerline points.
+  void place_shapes(const ResultsStep& step) {
+    if (layout.rigid_bodies.empty() || !shape_corners.empty()) return;
+    Eigen::AlignedBox3d extent;
+    for (const Eigen::Vector3d& x : step.configuration->position) extent.extend(x);
+    for (const Eigen::MatrixXd& centerline : step.centerlines)
+      for (Eigen::Index p = 0; p < centerline.rows(); ++p) extent.extend(Eigen::Vector3d(centerline.row(p).transpose()));
+    const double length = 0.1 * extent.diagonal().norm();
+    for (std::size_t k = 0; k < layout.rigid_bodies.size(); ++k) {
+      const RigidBodyShape& shape = layout.rigid_bodies[k];
+      if (shape.kind == RigidBodyShape::Kind::axes && shape.size.isZero(0.0) && !(length > 0.0))
+        throw Error("layout.rigid_bodies[" + std::to_string(k) + "] leaves its axes' length to the model's extent, "
+                        "but the first step's nodes and centerlines are all at one point",
+                    where("append") + " at step 0", "give the axes' lengths in size");
+    }
+    for (const RigidBodyShape& shape : layout.rigid_bodies) shape_corners.push_back(shape_vertices(shape, length));
+  }
+
+  /// Each shape's vertices x + R c and, if the layout has velocities, their velocities
+  /// ẋ + R (Ω × c) (Ω material).
+  void buffer_shapes(const ResultsStep& step) {
+    const Configuration& q = *step.configuration;
+    for (std::size_t k = 0; k < shape_corners.size(); ++k) {
+      const auto node = static_cast<std::size_t>(layout.rigid_bodies[k].node);
+      const Eigen::Matrix3Xd& corners = shape_corners[k];
+      const Eigen::Matrix3Xd vertices = (q.rotation[node] * corners).colwise() + q.position[node];
+      series[static_cast<std::size_t>(first_rigid_body) + k].push(vertices.data(), static_cast<std::size_t>(vertices.size()));
+      if (first_rigid_body_velocity < 0) continue;
+      const auto i = static_cast<Eigen::Index>(6 * node);
+      const Eigen::Vector3d x_dot = step.velocity->segment<3>(i), omega = step.velocity->segment<3>(i + 3);
+      Eigen::Matrix3Xd velocities(3, corners.cols());
+      for (Eigen::Index c = 0; c < corners.cols(); ++c)
+        velocities.col(c) = x_dot + q.rotation[node] * omega.cross(corners.col(c));
+      series[static_cast<std::size_t>(first_rigid_body_velocity) + k].push(velocities.data(),
+                                                                          static_cast<std::size_t>(velocities.size()));
+    }
+  }
+
   void buffer_step(const ResultsStep& step) {
     series[0].push(&step.time, 1);
     buffer_nodes(step);
@@ -460,6 +573,7 @@ struct ResultsWriter::Impl {
         series[static_cast<std::size_t>(first_field) + f * step.centerline_fields.size() + k].push(
             rows.data(), static_cast<std::size_t>(rows.size()));
       }
+    buffer_shapes(step);
     last_time = step.time;
   }
 };
@@ -547,6 +661,7 @@ void ResultsWriter::append(const ResultsStep& step) {
   Impl& impl = *impl_;
   impl.require_open("append");
   impl.check_step(step);
+  impl.place_shapes(step);
   impl.buffer_step(step);
   ++impl.appended;
   if (impl.appended - impl.flushed >= impl.flush_every) flush();

@@ -152,6 +152,7 @@ std::string XdmfSidecar::step_grid(const std::string& step, const std::string& t
   std::string grid = "   <Grid Name=\"step" + step + "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n" +
                      "    <Time Value=\"" + time + "\"/>\n";
   for (std::size_t k = 0; k < layout_.centerline_points.size(); ++k) grid += beam_grid(step, k, rows);
+  for (std::size_t k = 0; k < layout_.rigid_bodies.size(); ++k) grid += rigid_body_grid(step, k, rows);
   if (layout_.node_count > 0) grid += nodes_grid(step, rows);
   return grid + "   </Grid>\n";
 }
@@ -174,6 +175,25 @@ std::string XdmfSidecar::beam_grid(const std::string& step, std::size_t beam, co
                       "      ") +
             "     </Attribute>\n";
   }
+  return grid + "    </Grid>\n";
+}
+
+std::string XdmfSidecar::rigid_body_grid(const std::string& step, std::size_t body, const std::string& rows) const {
+  const bool box = layout_.rigid_bodies[body].kind == RigidBodyShape::Kind::box;
+  const int vertices = box ? 8 : 6;
+  const std::string k = std::to_string(body);
+  std::string grid =
+      "    <Grid Name=\"rigid_body" + k + "\" GridType=\"Uniform\">\n" +
+      (box ? "     <Topology TopologyType=\"Hexahedron\" NumberOfElements=\"1\">\n      <DataItem Dimensions=\"1 8\""
+           : "     <Topology TopologyType=\"Polyline\" NumberOfElements=\"3\" NodesPerElement=\"2\">\n"
+             "      <DataItem Dimensions=\"3 2\"") +
+      " NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" + h5_name_ + (box ? ":/xdmf/hexahedron" : ":/xdmf/axes") +
+      "</DataItem>\n     </Topology>\n     <Geometry GeometryType=\"XYZ\">\n" +
+      step_item("/rigid_bodies/body" + k, step, rows, {vertices, 3}, 3, "      ") + "     </Geometry>\n";
+  if (layout_.velocities)
+    grid += "     <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n" +
+            step_item("/rigid_body_fields/velocity/body" + k, step, rows, {vertices, 3}, 3, "      ") +
+            "     </Attribute>\n";
   return grid + "    </Grid>\n";
 }
 

@@ -2,7 +2,7 @@
 /// \file
 /// The XDMF sidecar of a results file (docs/output.md, "XDMF sidecar"): an XDMF 3 temporal
 /// collection that ParaView's default reader (XDMF3) plays as an animation of the beams'
-/// centerlines and the nodes. Every array is a hyperslab of the HDF5 file written in XDMF 3's
+/// centerlines, the rigid bodies' shapes and the nodes. Every array is a hyperslab of the HDF5 file written in XDMF 3's
 /// own syntax, `file.h5:/dataset|start:stride:count:dimensions`, with its full Dimensions,
 /// NumberType, Precision and Format.
 ///
@@ -40,6 +40,8 @@ private:
   /// The grid of one step, with the texts of its step number, time and row count.
   std::string step_grid(const std::string& step, const std::string& time, const std::string& rows) const;
   std::string beam_grid(const std::string& step, std::size_t beam, const std::string& rows) const;
+  /// Shape `body` of layout.rigid_bodies: a Hexahedron (box) or 3 two-point Polyline cells (axes).
+  std::string rigid_body_grid(const std::string& step, std::size_t body, const std::string& rows) const;
   std::string nodes_grid(const std::string& step, const std::string& rows) const;
   /// A DataItem reading step `step` of `dataset` (rows × shape, doubles): the first `taken`
   /// entries of its last dimension.

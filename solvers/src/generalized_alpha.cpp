@@ -274,6 +274,7 @@ struct GeneralizedAlpha::Implementation {
     } else {
       consistent_accelerations(false);
     }
+    if (!initialized && options.perturbed_starting_values) perturb_starting_values();
     if (options.iteration_matrix == IterationMatrix::frozen) assembly.freeze(input(t));
     evaluate(t, nullptr, 1.0);
     // The balance starts at t = 0 with the consistent accelerations.
@@ -290,8 +291,12 @@ struct GeneralizedAlpha::Implementation {
   }
 
   /// Assembles [M Bᵀ; B 0] at the current state (the residual then holds [r ; Φ]) and factorizes
-  /// it with the Dirichlet conditions. It is not an iteration matrix.
+  /// it with the Dirichlet conditions. It is not an iteration matrix. Its chart is the current
+  /// state: with the last step's increment left in it, B came out as B T(hΔq), and the
+  /// accelerations of initialize() during a run missed the joints by ½ h (Ω × v̇) (tests/dynamics/
+  /// heavy_top_test.cpp, "initialize() during a run …").
   void factorize_mass_and_constraints() {
+    increment.setZero();
     const MatrixCoefficients mass_only{.mass = 1.0, .damping = 0.0, .stiffness = 0.0};
     evaluate(t, &mass_only, 1.0, true);
     factorize(t);
@@ -333,6 +338,49 @@ struct GeneralizedAlpha::Implementation {
       throw Error("the consistent accelerations are not finite at t = " + significant(t),
                   "solvers::GeneralizedAlpha",
                   "check the model's masses, loads and velocities for NaN or infinite values");
+  }
+
+  /// Perturbed starting values (DynamicOptions::perturbed_starting_values, docs/dynamics.md
+  /// D6d). The method's smooth numerical solution has a_n = v̇(t_n) + Δ_α h v̈(t_n) + O(h²) and
+  /// v_n = v(t_n) + c_v h² v̈(t_n) + O(h³), Δ_α = α_m − α_f, c_v = 1/6 − β − Δ_α/2 (the update
+  /// relations of D3 expanded about an exact trajectory, derived there; cf. Arnold & Brüls 2007,
+  /// Arnold, Brüls & Cardona 2015). Started from a₀ = v̇₀, v₀ = v(t₀), the index-3 method turns
+  /// the O(h²) velocity offset along the constraints into an O(h) acceleration and multiplier
+  /// transient that decays like (−ρ∞)ⁿ; started on the smooth solution it has none. v̈₀ is the
+  /// difference quotient (v̇₁ − v̇₀)/h of the consistent accelerations at t₀ and at the end of one
+  /// auxiliary step of h from the unperturbed values (its v₁ is O(h²) off, so v̈₀ is O(h) off and
+  /// the starting values O(h²) and O(h³) off). The auxiliary step is undone; its Newton
+  /// iterations and factorizations stay in the counters. A frame's rotation adds h²/12 Ω × Ω̇ to
+  /// its velocity (from log(R(t)ᵀR(t + h)), D6d).
+  void perturb_starting_values() {
+    const double h = options.time_step;
+    Snapshot initial;
+    save(initial);
+    // The step books its work against the forces at its start, which initialize() sets only
+    // afterwards; the auxiliary step's work is discarded with it.
+    last_work_force = Eigen::VectorXd::Zero(assembly.dof_count());
+    if (!try_step(h, Predictor::extrapolated) && !try_step(h, Predictor::velocity_only))
+      throw Error("the auxiliary step of the perturbed starting values did not converge at t = " +
+                      significant(t) + " (h = " + significant(h) + "): " + last_failure,
+                  "solvers::GeneralizedAlpha::initialize",
+                  "reduce the time step, or switch DynamicOptions::perturbed_starting_values off");
+    consistent_accelerations(false);
+    const Eigen::VectorXd vdot_next = acceleration;
+    restore(initial);
+    const double delta_alpha = alpha.alpha_m - alpha.alpha_f;
+    const Eigen::VectorXd vddot = (vdot_next - acceleration) / h;
+    algorithmic_acceleration = acceleration + delta_alpha * h * vddot;
+    // A frame's rotation also has log(R(t)ᵀR(t + h)) = … + h³/12 Ω × Ω̇ (D6d): its velocity the
+    // extra h²/12 Ω × Ω̇.
+    Eigen::VectorXd offset = h * h * (1.0 / 6.0 - alpha.beta - 0.5 * delta_alpha) * vddot;
+    for (int b = 0; b < model.state().block_count(); ++b)
+      if (model.state().is_frame(b)) {
+        const int rotation = model.state().blocks[b].offset + 3;
+        offset.segment<3>(rotation) +=
+            h * h / 12.0 * velocity.segment<3>(rotation).cross(acceleration.segment<3>(rotation));
+      }
+    velocity += offset;
+    for (int dof : model.fixed_dofs()) algorithmic_acceleration(dof) = velocity(dof) = 0.0;
   }
 
   /// Moves the positions onto Φ(q, t) = 0 by Gauss–Newton on the least change in the metric of

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Shared by the output tests: a small deterministic run (3 nodes, 2 multipliers, 2 scalars,
-/// 1 probe, 2 beams with 2 centerline fields), a scratch folder, and readers for what
+/// 1 probe, 2 beams with 2 centerline fields, a box and axes drawn at two nodes), a scratch folder, and readers for what
 /// ResultsWriter wrote.
 
 #include <spar/core/configuration.hpp>
@@ -51,6 +51,10 @@ inline core::ResultsLayout sample_layout() {
   layout.centerline_points = {4, 5};
   layout.centerline_fields = {{.name = "arc_length", .unit = "m", .description = "arc length"},
                               {.name = "velocity", .unit = "m/s", .description = "velocity", .components = 3}};
+  // A box off its node's origin, and the axes at their default length (a tenth of the model's extent).
+  layout.rigid_bodies = {{.node = 1, .kind = core::RigidBodyShape::Kind::box, .size = {0.4, 0.2, 0.1},
+                          .offset = {0.05, -0.1, 0.2}},
+                         {.node = 2}};
   return layout;
 }
 

@@ -22,8 +22,9 @@ if(NOT status EQUAL 0)
 endif()
 
 # One CSV row per recorded step after the header. Per step the sidecar holds slider_crank's two
-# rods (6 elements each: 61 centerline points, one polyline) and its 19 nodes (9 control points
-# per rod and the slider, one vertex each): 2 × 61 + 19 = 141 points, 2 + 19 = 21 cells.
+# rods (6 elements each: 61 centerline points, one polyline), the slider's box (8 vertices, one
+# hexahedron) and its 19 nodes (9 control points per rod and the slider, one vertex each):
+# 2 × 61 + 8 + 19 = 149 points, 2 + 1 + 19 = 22 cells.
 file(STRINGS "${WORK_DIR}/slider_crank.csv" rows)
 list(LENGTH rows row_count)
 math(EXPR steps "${row_count} - 1")
@@ -36,8 +37,8 @@ foreach(attempt 1 2 3)
   string(RANDOM LENGTH 3 ALPHABET 0123456789 display)
   math(EXPR display "100 + ${display}")
   execute_process(
-    COMMAND "${XVFB_RUN}" -a -n ${display} "${PVPYTHON}" "${CHECK_SCRIPT}" "${WORK_DIR}/slider_crank.xmf" ${steps} 141
-            21 "${WORK_DIR}/frame.png"
+    COMMAND "${XVFB_RUN}" -a -n ${display} "${PVPYTHON}" "${CHECK_SCRIPT}" "${WORK_DIR}/slider_crank.xmf" ${steps} 149
+            22 "${WORK_DIR}/frame.png" 1
     RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors TIMEOUT 120)
   if(NOT "${output}\n${errors}" MATCHES "bad X server connection|Xvfb failed to start")
     break()

@@ -1,12 +1,13 @@
 """Opens a results sidecar the way a ParaView user does and checks what they would see.
 
 Usage (ParaView's own Python, under a virtual X server):
-    xvfb-run -a pvpython paraview_check.py RUN.xmf STEPS POINTS CELLS FRAME.png
+    xvfb-run -a pvpython paraview_check.py RUN.xmf STEPS POINTS CELLS FRAME.png BOXES
 
 With the reader ParaView picks by itself (OpenDataFile, the XDMF3 reader for .xmf) it checks:
 the number of time steps; at the first, middle and last step the points and cells of all blocks
-together and the point data (beams: arc_length and velocity; nodes: velocity); that the beams
-move; and a frame rendered at the last step, coloured by velocity, that is not blank. Prints one
+together, BOXES rigid bodies drawn as hexahedra, and the point data (beams: arc_length and
+velocity; boxes and nodes: velocity); that the beams move; that the boxes keep their edges (the
+slider_crank's 2 cm cube); and a frame rendered at the last step, coloured by velocity, that is not blank. Prints one
 line per check and exits 1 at the first failure. paraview_check.cmake runs it and also fails on
 any error or warning ParaView printed.
 """
@@ -16,7 +17,7 @@ from paraview import servermanager
 from paraview.simple import (ColorBy, GetActiveViewOrCreate, OpenDataFile, Render, ResetCamera,
                              SaveScreenshot, Show)
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import VTK_POLY_LINE, VTK_POLY_VERTEX
+from vtkmodules.vtkCommonDataModel import VTK_HEXAHEDRON, VTK_POLY_LINE, VTK_POLY_VERTEX
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 
@@ -39,9 +40,11 @@ def leaves(block):
 
 
 def kind(dataset):
-    """'beam' for a polyline, 'nodes' for a point cloud (VTK cell types 4 and 2)."""
+    """'beam' for a polyline, 'nodes' for a point cloud, 'box' for a rigid body's hexahedron (VTK
+    cell types 4, 2 and 12)."""
     types = {dataset.GetCellType(i) for i in range(dataset.GetNumberOfCells())}
-    return {frozenset({VTK_POLY_LINE}): "beam", frozenset({VTK_POLY_VERTEX}): "nodes"}.get(frozenset(types), str(types))
+    return {frozenset({VTK_POLY_LINE}): "beam", frozenset({VTK_POLY_VERTEX}): "nodes",
+            frozenset({VTK_HEXAHEDRON}): "box"}.get(frozenset(types), str(types))
 
 
 def point_arrays(dataset):
@@ -50,6 +53,7 @@ def point_arrays(dataset):
 
 
 path, steps, points, cells, frame = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
+boxes = int(sys.argv[6])
 
 reader = OpenDataFile(path)
 check(reader is not None, f"ParaView opens {path}")
@@ -66,12 +70,22 @@ for t in (times[0], times[len(times) // 2], times[-1]):
     check((total_points, total_cells) == (points, cells),
           f"t = {t:g} s: {total_points} points and {total_cells} cells, expected {points} and {cells}")
     kinds = sorted(kind(block) for block in blocks)
-    check(kinds == ["beam"] * (len(blocks) - 1) + ["nodes"], f"t = {t:g} s: blocks {kinds}: polylines and nodes")
+    check(kinds == ["beam"] * (len(blocks) - 1 - boxes) + ["box"] * boxes + ["nodes"],
+          f"t = {t:g} s: blocks {kinds}: polylines, {boxes} boxes and nodes")
     for block in blocks:
-        expected = {"velocity"} if kind(block) == "nodes" else {"arc_length", "velocity"}
+        expected = {"arc_length", "velocity"} if kind(block) == "beam" else {"velocity"}
         check(point_arrays(block) == expected, f"t = {t:g} s: a {kind(block)} block has point data {sorted(expected)}")
     bounds.append([b for block in blocks for b in block.GetBounds()])
 check(bounds[0] != bounds[-1], "the beams move between the first and the last step")
+# A box is a rigid body: its 8 vertices x + R c keep their distances whatever the step.
+for t in (times[0], times[-1]):
+    reader.UpdatePipeline(t)
+    for block in leaves(servermanager.Fetch(reader)):
+        if kind(block) == "box":
+            corners = vtk_to_numpy(block.GetPoints().GetData())
+            edges = sorted(round(float(((corners[i] - corners[j]) ** 2).sum() ** 0.5), 9)
+                           for i, j in ((0, 1), (0, 3), (0, 4)))
+            check(edges == [0.02, 0.02, 0.02], f"t = {t:g} s: the slider's box has edges {edges} m (a 2 cm cube)")
 
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [480, 360]

@@ -18,6 +18,58 @@ namespace {
 
 constexpr int sample_steps = 5;
 
+/// The material-frame vertices of the sample layout's shapes, written out by hand: the box's
+/// corners offset + ½ (±0.4, ±0.2, ±0.1) in VTK's hexahedron order, and the axes' segments of the
+/// default length, a tenth of the diagonal of the first step's extent — its nodes and
+/// centerlines span [0, 4] × [0, 4] × [0, 5] (output_fixtures.hpp), a diagonal of √57.
+std::vector<Eigen::Vector3d> sample_shape_corners(int shape) {
+  if (shape == 0) {
+    const int signs[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                             {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    std::vector<Eigen::Vector3d> corners;
+    for (const auto& s : signs)
+      corners.push_back(Eigen::Vector3d(0.05, -0.1, 0.2) + Eigen::Vector3d(0.2 * s[0], 0.1 * s[1], 0.05 * s[2]));
+    return corners;
+  }
+  const double L = 0.1 * std::sqrt(57.0);
+  return {Eigen::Vector3d::Zero(), Eigen::Vector3d(L, 0, 0), Eigen::Vector3d::Zero(),
+          Eigen::Vector3d(0, L, 0),  Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, L)};
+}
+
+/// Each shape's vertices are x + R c and their velocities ẋ + R (Ω × c), c its material-frame
+/// vertices; computed here vertex by vertex, in the writer as one product, so they agree to
+/// round-off: 1e-14 for positions of size 10, 1e-12 for velocities of size 500 (Ω ~ 400 rad/s).
+void check_shapes(const ReadOnlyFile& file, int steps) {
+  const auto S = static_cast<hsize_t>(steps);
+  for (int shape = 0; shape < 2; ++shape) {
+    const std::vector<Eigen::Vector3d> corners = sample_shape_corners(shape);
+    const auto V = corners.size();
+    const std::string k = std::to_string(shape);
+    const DatasetContents vertices = file.read("/rigid_bodies/body" + k),
+                          velocities = file.read("/rigid_body_fields/velocity/body" + k);
+    REQUIRE(vertices.shape == std::vector<hsize_t>{S, V, 3});
+    REQUIRE(velocities.shape == std::vector<hsize_t>{S, V, 3});
+    const int node = shape == 0 ? 1 : 2;
+    for (int step = 0; step < steps; ++step) {
+      const SampleStep sample(step);
+      const Eigen::Matrix3d& R = sample.configuration.rotation[static_cast<std::size_t>(node)];
+      const Eigen::Vector3d& x = sample.configuration.position[static_cast<std::size_t>(node)];
+      const Eigen::Vector3d x_dot = sample.velocity.segment<3>(6 * node), omega = sample.velocity.segment<3>(6 * node + 3);
+      for (std::size_t v = 0; v < V; ++v) {
+        const Eigen::Vector3d expected = x + R * corners[v], expected_velocity = x_dot + R * omega.cross(corners[v]);
+        for (std::size_t c = 0; c < 3; ++c) {
+          const std::size_t at = (static_cast<std::size_t>(step) * V + v) * 3 + c;
+          CHECK(std::abs(vertices.values[at] - expected(static_cast<int>(c))) <= 1e-14);
+          CHECK(std::abs(velocities.values[at] - expected_velocity(static_cast<int>(c))) <= 1e-12);
+        }
+      }
+    }
+  }
+  CHECK(file.read("/xdmf/hexahedron").values == std::vector<double>{0, 1, 2, 3, 4, 5, 6, 7});
+  CHECK(file.read("/xdmf/axes").shape == std::vector<hsize_t>{3, 2});
+  CHECK(file.read("/xdmf/axes").values == std::vector<double>{0, 1, 2, 3, 4, 5});
+}
+
 /// Every value but the quaternions is copied, not computed, so the round trip must be exact; the
 /// quaternions are checked against the stored rotations through an independent formula.
 void check_round_trip(const ReadOnlyFile& file, int steps) {
@@ -104,6 +156,7 @@ TEST_CASE("ResultsWriter round-trips every dataset whatever the block size", "[o
   }
   const ReadOnlyFile file(path);
   check_round_trip(file, sample_steps);
+  check_shapes(file, sample_steps);
   CHECK(file.string_attribute("strategy") == "frozen");
   CHECK(file.double_attribute("h") == 1e-4);
   CHECK(file.string_attribute("schema") == "spar.results/2");
@@ -135,7 +188,8 @@ TEST_CASE("ResultsWriter writes only the datasets of its layout", "[output]") {
   CHECK(file.read("/time").values == std::vector<double>{0, 1, 2, 3});
   CHECK(file.read("/scalars/total_energy").values == std::vector<double>{0, 10, 20, 30});
   for (const char* absent :
-       {"/positions", "/quaternions", "/velocities", "/multipliers", "/probes", "/centerlines", "/centerline_fields"})
+       {"/positions", "/quaternions", "/velocities", "/multipliers", "/probes", "/centerlines", "/centerline_fields",
+        "/rigid_bodies", "/rigid_body_fields", "/xdmf/hexahedron", "/xdmf/axes"})
     CHECK_FALSE(file.has(absent));
 }
 
@@ -237,6 +291,21 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
     CHECK_THROWS_WITH(ResultsWriter(folder.file("j.h5"), layout), Contains("control character"));
     CHECK_THROWS_WITH(ResultsWriter(folder.file("d.h5"), spar::test::sample_layout(), 0), Contains("flush_every = 0"));
   }
+  SECTION("rigid-body shapes") {
+    layout.rigid_bodies[0].node = 3;
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("k.h5"), layout),
+                      Contains("layout.rigid_bodies[0].node = 3 is not a node") && Contains("node_count = 3"));
+    layout = spar::test::sample_layout();
+    layout.rigid_bodies[0].size.z() = 0.0;
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("l.h5"), layout),
+                      Contains("layout.rigid_bodies[0] has size (0.4, 0.2, 0)") && Contains("box's three edge lengths"));
+    layout = spar::test::sample_layout();
+    layout.rigid_bodies[1].size = {0.1, 0.0, 0.1};  // axes: all given or all left to the model
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("m.h5"), layout), Contains("all zero for a tenth"));
+    layout = spar::test::sample_layout();
+    layout.rigid_bodies[1].offset.x() = NAN;
+    CHECK_THROWS_WITH(ResultsWriter(folder.file("n.h5"), layout), Contains("layout.rigid_bodies[1]"));
+  }
   SECTION("names taken and a closed file") {
     ResultsWriter writer(folder.file("run.h5"), layout);
     CHECK_THROWS_WITH(writer.write_constant("time", Eigen::MatrixXd::Zero(1, 1), "s", "t"), Contains("already holds an object named time"));
@@ -244,6 +313,58 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
     CHECK_THROWS_WITH(writer.append(SampleStep(0).step), Contains("closed"));
     CHECK_THROWS_WITH(writer.write_attribute("x", 1.0), Contains("closed"));
   }
+}
+
+TEST_CASE("ResultsWriter draws a rotated body's box at x + R c and its axes at their default length", "[output]") {
+  // One body at x = (1, 2, 3) turned by 90° about Z: R maps material X to Y and Y to −X, so the
+  // box's corner c = (−a, −b, −c)/2 + offset lies at x + (b/2 − o_y, −a/2 + o_x, −c/2 + o_z), and
+  // the axes' ends at x + L Y, x − L X, x + L Z. Every number is a sum of a few exact binary
+  // fractions and 2^-k multiples, but cos(π/2) = 6e-17 rounds R: 1e-15.
+  const spar::test::ScratchFolder folder("shapes");
+  const std::string path = folder.file("run.h5");
+  spar::core::ResultsLayout layout;
+  layout.node_count = 2;
+  layout.velocities = false;
+  layout.rigid_bodies = {{.node = 0, .kind = spar::core::RigidBodyShape::Kind::box, .size = {0.5, 0.25, 1.0},
+                          .offset = {0.125, 0.0, -0.5}},
+                         {.node = 0}};
+  spar::core::Configuration q;
+  q.add_frame(Eigen::Vector3d(1, 2, 3), Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix());
+  q.add_frame(Eigen::Vector3d(1, 2, 3) + Eigen::Vector3d(3, 4, 0), Eigen::Matrix3d::Identity());  // extent: diagonal 5
+  {
+    ResultsWriter writer(path, layout, 1);
+    writer.append({.time = 0.0, .configuration = &q});
+  }
+  const ReadOnlyFile file(path);
+  const DatasetContents box = file.read("/rigid_bodies/body0"), axes = file.read("/rigid_bodies/body1");
+  REQUIRE(box.shape == std::vector<hsize_t>{1, 8, 3});
+  REQUIRE(axes.shape == std::vector<hsize_t>{1, 6, 3});
+  const Eigen::Vector3d corner0(1 + 0.125 - 0.0, 2 - 0.25 + 0.125, 3 - 0.5 - 0.5);  // x + (b/2, −a/2 + o_x, −c/2 + o_z)
+  const Eigen::Vector3d corner6(1 - 0.125, 2 + 0.25 + 0.125, 3 + 0.5 - 0.5);        // c = (a, b, c)/2 + offset
+  for (int c = 0; c < 3; ++c) {
+    CHECK(std::abs(box.values[static_cast<std::size_t>(c)] - corner0(c)) <= 1e-15);
+    CHECK(std::abs(box.values[static_cast<std::size_t>(18 + c)] - corner6(c)) <= 1e-15);
+  }
+  const double L = 0.5;  // a tenth of the diagonal 5 of the nodes' extent
+  const Eigen::Vector3d x(1, 2, 3);
+  const Eigen::Vector3d ends[6] = {x, x + L * Eigen::Vector3d::UnitY(), x, x - L * Eigen::Vector3d::UnitX(),
+                                   x, x + L * Eigen::Vector3d::UnitZ()};
+  for (std::size_t v = 0; v < 6; ++v)
+    for (int c = 0; c < 3; ++c) CHECK(std::abs(axes.values[3 * v + static_cast<std::size_t>(c)] - ends[v](c)) <= 1e-15);
+  CHECK_FALSE(file.has("/rigid_body_fields"));  // no velocities in this layout
+}
+
+TEST_CASE("ResultsWriter refuses default axes on a model of one point", "[output]") {
+  const spar::test::ScratchFolder folder("one_point");
+  spar::core::ResultsLayout layout;
+  layout.node_count = 1;
+  layout.velocities = false;
+  layout.rigid_bodies = {{.node = 0}};
+  spar::core::Configuration q;
+  q.add_frame(Eigen::Vector3d(1, 2, 3), Eigen::Matrix3d::Identity());
+  ResultsWriter writer(folder.file("run.h5"), layout, 1);
+  CHECK_THROWS_WITH(writer.append({.time = 0.0, .configuration = &q}),
+                    Contains("all at one point") && Contains("give the axes' lengths in size"));
 }
 
 TEST_CASE("A moved ResultsWriter keeps writing the same file", "[output]") {
@@ -280,8 +401,9 @@ TEST_CASE("Every dataset states its units and meaning; strings are UTF-8; counte
   CHECK(file.integer_attribute("steps") == 3'000'000'000);
 
   const std::vector<std::string> datasets = file.datasets();
-  // time, 4 node series, 2 scalars, 1 probe, 2 beams × (centerline, 2 fields), 3 topologies, 1 constant
-  CHECK(datasets.size() == 18);
+  // time, 4 node series, 2 scalars, 1 probe, 2 beams × (centerline, 2 fields), 2 shapes ×
+  // (vertices, velocities), 5 topologies, 1 constant
+  CHECK(datasets.size() == 24);
   for (const std::string& name : datasets) {
     INFO("dataset " << name);
     for (const char* key : {"units", "description"}) {

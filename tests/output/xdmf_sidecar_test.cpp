@@ -89,7 +89,7 @@ TEST_CASE("The XDMF sidecar is well-formed XML and describes every flushed step"
     CHECK(step.attribute("CollectionType") == "Spatial");
     CHECK(std::stod(step.one("Time").attribute("Value")) == SampleStep(static_cast<int>(k)).step.time);
     const auto grids = step.all("Grid");
-    REQUIRE(grids.size() == 3);
+    REQUIRE(grids.size() == 5);
     for (std::size_t beam = 0; beam < 2; ++beam) {
       const XmlElement& grid = *grids[beam];
       CHECK(grid.attribute("Name") == "beam" + std::to_string(beam));
@@ -110,8 +110,22 @@ TEST_CASE("The XDMF sidecar is well-formed XML and describes every flushed step"
       CHECK(fields[1]->attribute("AttributeType") == "Vector");
       CHECK(fields[1]->one("DataItem").attribute("Dimensions") == points + " 3");
     }
-    CHECK(grids[2]->attribute("Name") == "nodes");
-    CHECK(grids[2]->one("Attribute").attribute("Name") == "velocity");
+    // The box (a hexahedron of 8 vertices) and the axes (3 segments of 2 vertices) with their
+    // vertices' velocities.
+    const XmlElement &box = *grids[2], &axes = *grids[3];
+    CHECK(box.attribute("Name") == "rigid_body0");
+    CHECK(box.one("Topology").attribute("TopologyType") == "Hexahedron");
+    CHECK(box.one("Topology").one("DataItem").text == "run.h5:/xdmf/hexahedron");
+    CHECK(box.one("Geometry").one("DataItem").text ==
+          "run.h5:/rigid_bodies/body0|" + std::to_string(k) + " 0 0:1 1 1:1 8 3:" + (k < 3 ? "3" : "4") + " 8 3");
+    CHECK(axes.attribute("Name") == "rigid_body1");
+    CHECK(axes.one("Topology").attribute("TopologyType") == "Polyline");
+    CHECK(axes.one("Topology").attribute("NumberOfElements") == "3");
+    CHECK(axes.one("Topology").attribute("NodesPerElement") == "2");
+    CHECK(axes.one("Topology").one("DataItem").attribute("Dimensions") == "3 2");
+    for (const XmlElement* shape : {&box, &axes}) CHECK(shape->one("Attribute").attribute("Name") == "velocity");
+    CHECK(grids[4]->attribute("Name") == "nodes");
+    CHECK(grids[4]->one("Attribute").attribute("Name") == "velocity");
   }
   // Every reference resolves against the file (closed first: HDF5 will not open a file a second
   // time in the process that writes it); close() flushed the buffered step, so all 4 are listed.
@@ -119,8 +133,9 @@ TEST_CASE("The XDMF sidecar is well-formed XML and describes every flushed step"
   const ReadOnlyFile file(path);
   const XmlElement closed = spar::test::XmlReader::parse(spar::test::read_text(writer.xdmf_path()));
   CHECK(closed.one("Domain").one("Grid").all("Grid").size() == 4);
-  // Per step: 2 beams × (polyline, centerline, 2 fields) + nodes (polyvertex, positions, velocities).
-  CHECK(check_heavy_data(closed, file) == 4 * 11);
+  // Per step: 2 beams × (polyline, centerline, 2 fields) + 2 shapes × (topology, vertices,
+  // velocities) + nodes (polyvertex, positions, velocities).
+  CHECK(check_heavy_data(closed, file) == 4 * 17);
 }
 
 namespace {

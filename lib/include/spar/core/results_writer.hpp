@@ -43,6 +43,26 @@ struct CenterlineField {
   int components = 1;       ///< 1 (a scalar per point) or 3 (a vector per point, inertial frame)
 };
 
+/// How the XDMF sidecar draws a rigid body (docs/output.md, "Rigid bodies"): a box or the three
+/// axes of its frame, both given in the body's material frame and carried by the node's frame, so
+/// a vertex c of the shape is at x + R c. The writer stores the vertices of every step (the
+/// frames stay in `positions` and `quaternions` as they are): ParaView cannot rotate a shape by
+/// a stored quaternion.
+struct RigidBodyShape {
+  enum class Kind {
+    axes,  ///< three line segments from `offset` along the body's material X, Y and Z (cells 0, 1, 2)
+    box,   ///< a hexahedron centred at `offset`, its edges along the body's material axes
+  };
+  int node = 0;  ///< the body's node: a frame of the configuration, 0 ≤ node < layout.node_count
+  Kind kind = Kind::axes;
+  /// box: its edge lengths along material X, Y, Z (m, all > 0); axes: each axis' length (m, all
+  /// > 0), or all zero (the default) for a tenth of the model's extent — the diagonal of the box
+  /// that bounds the first appended step's nodes and centerline points.
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  /// The box's centre or the axes' origin in the body's material frame (m), from the node.
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+};
+
 /// What every step of a run holds; fixed when the file is created.
 struct ResultsLayout {
   /// Nodes of the configuration: positions n×3, rotations as unit quaternions n×4
@@ -62,6 +82,9 @@ struct ResultsLayout {
   std::vector<int> centerline_points;
   /// Point data of every beam's centerline points (none: the beams are bare polylines).
   std::vector<CenterlineField> centerline_fields;
+  /// Shapes drawn at nodes in the XDMF sidecar, one grid each (none: the nodes are points only).
+  /// A node may carry several shapes.
+  std::vector<RigidBodyShape> rigid_bodies;
 };
 
 /// One step's data, borrowed for the duration of ResultsWriter::append.

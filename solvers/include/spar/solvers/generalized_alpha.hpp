@@ -95,6 +95,16 @@ struct DynamicOptions {
   /// τ well above the period of the slowest elastic mode makes deformation rates expensive: the
   /// projection then gives the bodies the rigid motion the constraints allow (to ~1/(τω)²).
   double initial_velocity_stiffness_time = 0.0;
+  /// Perturbed starting values (docs/dynamics.md D6d; Arnold, Brüls & Cardona 2015): the first
+  /// initialize() starts the method on its smooth numerical solution, a₀ = v̇₀ + Δ_α h v̈₀ and
+  /// v₀ ← v₀ + (1/6 − β − Δ_α/2) h² v̈₀, plus h²/12 Ω₀ × Ω̇₀ on a frame's rotation (Δ_α = α_m −
+  /// α_f, v̈₀ from one auxiliary step of h), instead of a₀ = v̇₀ and the consistent v₀. The
+  /// index-3 method's multipliers and accelerations then lose their O(h) start-up transient (an
+  /// error alternating from step to step, decaying as ρ∞ per step) and are second order from the
+  /// first step; velocity() at t₀ is then v₀ + O(h²) (the method's own). Costs one step; events
+  /// and remaps restart with a = v̇ and the velocities as they are. Off by default: a step drive
+  /// (the flexible slider-crank's) makes v̈₀ meaningless (D6d).
+  bool perturbed_starting_values = false;
 };
 
 /// What the initial assembly changed (DynamicOptions::initial_assembly).
