@@ -1,4 +1,4 @@
-// Knot insertion (A5.1), refinement (A5.4), degree elevation (A5.9) and the h/p/k-refinement
+// Knot insertion (A5.1), refinement (A5.4), degree elevation (through the Bézier form) and the h/p/k-refinement
 // calls: the curve is unchanged at 1000 points, the operator maps the old basis to the new one,
 // and the knot vectors come out as the book says.
 #include <spar/error.hpp>
@@ -123,6 +123,23 @@ TEST_CASE("degree elevation leaves the curve unchanged and keeps the continuity"
       CHECK(max_deviation(curve, elevated.curve) <= geometry_tolerance);
       CHECK(basis_transfer_error(U, degree_elevation_operator(U, t)) <= 1e-13);
     }
+}
+
+TEST_CASE("degree elevation next to a span 6·10⁴ times shorter than its neighbour keeps the basis", "[iga]") {
+  // libFuzzer's knot vector (fuzz/regressions/spline-elevation-next-to-a-short-span): A5.9's knot
+  // removal extrapolated by the span ratio and moved the curve by 7e-8 of its size; the elevation
+  // through the Bézier form is as exact here as for uniform knots.
+  spar::test::SplineSamples samples(41);
+  for (const int p : {3, 6}) {
+    std::vector<double> knots(p + 1, 0.0);
+    knots.insert(knots.end(), {0.164706, 0.164706, 0.999987});
+    knots.insert(knots.end(), p + 1, 1.0);
+    const KnotVector U(knots, p);
+    const NurbsCurve<3> curve = samples.curve<3>(U);
+    INFO("p = " << p);
+    CHECK(max_deviation(curve, elevate_degree(curve, 1).curve) <= geometry_tolerance);
+    CHECK(basis_transfer_error(U, degree_elevation_operator(U, 1)) <= 1e-13);
+  }
 }
 
 TEST_CASE("elevating a quadratic Bézier by one gives The NURBS Book eq. 5.36", "[iga][validation]") {

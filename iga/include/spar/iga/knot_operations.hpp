@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Knot insertion (The NURBS Book A5.1), knot refinement (A5.4) and degree elevation (A5.9), and
+/// Knot insertion (The NURBS Book A5.1), knot refinement (A5.4) and degree elevation (eq. 5.36 on
+/// each element's Bézier form), and
 /// the h-, p- and k-refinement built on them. Every operation returns its operator matrix T as
 /// well as the new curve: the new homogeneous control points are Qw = T · Pw (rows = control
 /// points), so the same T transfers any field discretized on the old basis (e.g. a beam's
@@ -32,7 +33,8 @@ KnotOperator knot_insertion_operator(const KnotVector& U, double u, int times);
 KnotOperator knot_refinement_operator(const KnotVector& U, const std::vector<double>& X);
 
 /// Raises the degree from p to p+t (t ≥ 0) keeping the continuity at every knot: each distinct
-/// knot's multiplicity grows by t (A5.9).
+/// knot's multiplicity grows by t. Computed through the Bézier form of each element, not by
+/// A5.9, whose knot removal loses digits next to short spans (docs/iga.md).
 KnotOperator degree_elevation_operator(const KnotVector& U, int t);
 
 /// The knots that split every element of U into `elements_per_span` equal parts (h-refinement).
@@ -65,7 +67,7 @@ RefinedCurve<Dim> refine_knots(const NurbsCurve<Dim>& curve, const std::vector<d
   return apply(curve, knot_refinement_operator(curve.knots(), X));
 }
 
-/// The curve of degree p+t (A5.9).
+/// The curve of degree p+t (degree_elevation_operator).
 template <int Dim>
 RefinedCurve<Dim> elevate_degree(const NurbsCurve<Dim>& curve, int t) {
   return apply(curve, degree_elevation_operator(curve.knots(), t));
