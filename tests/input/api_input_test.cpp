@@ -200,6 +200,10 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
        "2147483647 times"},
       {"h-refinement into INT_MAX parts", [] { iga::uniform_refinement_knots(iga::KnotVector::open_uniform(2, 2, 1), 2147483647); },
        "iga::max_knots"},
+      // Found by libFuzzer (fuzz/model_fuzzer, under UBSan).
+      {"straight_line of degree INT_MIN (degree - 1 overflowed)",
+       [] { iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 2, -2147483647 - 1); },
+       "degree -2147483648 is outside 1"},
       {"a knot span of 5e-324 (refined to a curve 13 % away)",
        [] { iga::KnotVector({0, 0, 0, 0, 4.9406564584124654e-324, 0.5, 1, 1, 1, 1}, 3); }, "differ by less than"},
       {"curve derivatives that overflow (a weight of 5e-324 next to 1)",

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <string>
 #include <vector>
 
 namespace spar::iga {
@@ -20,6 +21,11 @@ NurbsCurve<Dim> straight_line(const Eigen::Matrix<double, Dim, 1>& a,
                               const Eigen::Matrix<double, Dim, 1>& b, int elements, int degree) {
   if ((b - a).norm() == 0.0)
     throw Error("the segment has zero length", "iga::straight_line", "give two distinct end points");
+  // Checked before the continuity degree − 1 is formed (degree = INT_MIN overflowed there: found
+  // by libFuzzer under UBSan, fuzz/model_fuzzer).
+  if (degree < 1 || degree > max_degree)
+    throw Error("degree " + std::to_string(degree) + " is outside 1 … max_degree = " + std::to_string(max_degree),
+                "iga::straight_line", "give a degree from 1 to " + std::to_string(max_degree));
   const KnotVector knots = KnotVector::open_uniform(elements, degree, degree - 1);
   typename NurbsCurve<Dim>::Points points(Dim, knots.basis_count());
   const std::vector<double> greville = knots.greville();
