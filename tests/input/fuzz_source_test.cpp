@@ -8,7 +8,11 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <new>
+#include <vector>
 
 using namespace spar;
 
@@ -59,4 +63,28 @@ TEST_CASE("a fuzz case is a function of its bytes, and the empty input is a plau
   CHECK(fuzz::model_case(empty_model, model_log).built);
   CHECK(spline_log.violations().empty());
   CHECK(model_log.violations().empty());
+}
+
+TEST_CASE("the inputs libFuzzer found replay without a broken property", "[input]") {
+  // fuzz/regressions: each input that broke a property, named <target>-<what it found>; replayed
+  // through the case of its target, under the sanitizers too (the model input overflowed an int).
+  int replayed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SPAR_FUZZ_REGRESSIONS)) {
+    std::ifstream file(entry.path(), std::ios::binary);
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    const std::string name = entry.path().filename().string();
+    INFO(name);
+    fuzz::ByteSource source(bytes);
+    fuzz::CaseLog log;
+    if (name.starts_with("spline-"))
+      fuzz::spline_case(source, log);
+    else if (name.starts_with("model-"))
+      fuzz::model_case(source, log);
+    else
+      FAIL("a regression input must be named spline-… or model-…");
+    CHECK(log.violations().empty());
+    if (!log.violations().empty()) WARN(log.report());
+    ++replayed;
+  }
+  CHECK(replayed >= 2);
 }
