@@ -131,7 +131,8 @@ void GeometricallyExactBeam::build_elements(int quadrature_points) {
     };
     for (const Part& part : parts) {
       const iga::GaussRule rule = iga::gauss_legendre(part.points);
-      for (std::size_t g = 0; g < rule.points.size(); ++g) element.gauss_points.push_back(gauss_point(rule, g, part.index));
+      for (std::size_t g = 0; g < rule.points.size(); ++g)
+        element.gauss_points.push_back(gauss_point(rule, g, part.index));
     }
     // Consistent mass coefficients with p + 1 points whatever the stiffness quadrature: exact for
     // N_I N_J of degree 2p on a uniformly parameterized centerline. (They took the stiffness
