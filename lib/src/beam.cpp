@@ -112,30 +112,36 @@ void GeometricallyExactBeam::build_elements(int quadrature_points) {
     BeamElement element;
     element.first_control_point = span.span - degree_;
     const double half_length = 0.5 * (span.last - span.first);
+    // The reference data at point g of `rule` on this element.
+    const auto gauss_point = [&](const iga::GaussRule& rule, std::size_t g, int part) {
+      const double u = span.first + (rule.points[g] + 1.0) * half_length;
+      iga::rational_basis_derivatives(U, span.span, u, 1, centerline_.weights(), table);
+      const double jacobian = centerline_.derivatives(u, 1).col(1).norm();  // dS/du
+      if (!(jacobian > 0.0))
+        throw Error("the centerline has zero speed at u = " + std::to_string(u), where,
+                    "give a regular centerline (no coincident control points)");
+      BeamGaussPoint gp;
+      gp.weight = rule.weights[g] * half_length * jacobian;
+      gp.part = part;
+      for (int I = 0; I <= degree_; ++I) {
+        gp.shape[I] = table(0, I);
+        gp.shape_derivative[I] = table(1, I) / jacobian;
+      }
+      return gp;
+    };
     for (const Part& part : parts) {
       const iga::GaussRule rule = iga::gauss_legendre(part.points);
-      for (std::size_t g = 0; g < rule.points.size(); ++g) {
-        const double u = span.first + (rule.points[g] + 1.0) * half_length;
-        iga::rational_basis_derivatives(U, span.span, u, 1, centerline_.weights(), table);
-        const double jacobian = centerline_.derivatives(u, 1).col(1).norm();  // dS/du
-        if (!(jacobian > 0.0))
-          throw Error("the centerline has zero speed at u = " + std::to_string(u), where,
-                      "give a regular centerline (no coincident control points)");
-        BeamGaussPoint gp;
-        gp.weight = rule.weights[g] * half_length * jacobian;
-        gp.part = part.index;
-        for (int I = 0; I <= degree_; ++I) {
-          gp.shape[I] = table(0, I);
-          gp.shape_derivative[I] = table(1, I) / jacobian;
-        }
-        element.gauss_points.push_back(gp);
-      }
+      for (std::size_t g = 0; g < rule.points.size(); ++g)
+        element.gauss_points.push_back(gauss_point(rule, g, part.index));
     }
-    // Consistent mass coefficients with the points of part 0 (p + 1 points, or two for p = 1:
-    // exact for N_I N_J of degree 2p on a uniformly parameterized centerline).
+    // Consistent mass coefficients with p + 1 points whatever the stiffness quadrature: exact for
+    // N_I N_J of degree 2p on a uniformly parameterized centerline. (They took the stiffness
+    // points, so a reduced `quadrature_points` under-integrated the mass: one p = 2 element with
+    // 2 points had a singular mass matrix, and modal analysis gave negative frequencies.)
+    const iga::GaussRule mass_rule = iga::gauss_legendre(degree_ + 1);
     element.mass_coefficients = Eigen::MatrixXd::Zero(degree_ + 1, degree_ + 1);
-    for (const BeamGaussPoint& gp : element.gauss_points) {
-      if (gp.part != 0) continue;
+    for (std::size_t g = 0; g < mass_rule.points.size(); ++g) {
+      const BeamGaussPoint gp = gauss_point(mass_rule, g, 0);
       for (int I = 0; I <= degree_; ++I)
         for (int J = 0; J <= degree_; ++J)
           element.mass_coefficients(I, J) += gp.weight * gp.shape[I] * gp.shape[J];

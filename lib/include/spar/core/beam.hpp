@@ -35,8 +35,10 @@ struct BeamParameters {
   /// `section_axis_hint` (A₃ = the hint made orthogonal to A₁).
   std::vector<Eigen::Matrix3d> reference_rotations;
   Eigen::Vector3d section_axis_hint = Eigen::Vector3d::UnitZ();
-  /// Gauss points per element (at most iga::max_gauss_points); 0 chooses p + 1, and for p = 1 selective reduced integration
-  /// (one point for the two shears, two for everything else; 003 §3.2).
+  /// Gauss points per element for the internal forces (at most iga::max_gauss_points); 0 chooses
+  /// p + 1, and for p = 1 selective reduced integration (one point for the two shears, two for
+  /// everything else; 003 §3.2). The mass coefficients always take p + 1 points (exact).
+  /// Which to choose for a slender beam: docs/guide.md §2, "Choosing elements and degree".
   int quadrature_points = 0;
 };
 
