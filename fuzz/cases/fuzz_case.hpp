@@ -13,6 +13,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <random>
 #include <span>
@@ -146,6 +148,20 @@ bool accepted(Call&& call, const char* what, CaseLog& log) {
                          " instead of a spar::Error: " + other.what());
   }
   return false;
+}
+
+/// The body of a libFuzzer entry point: runs `fuzz_case` (spline_case, model_case) on the bytes;
+/// a broken property prints the inputs drawn and aborts, which libFuzzer reports with the input.
+template <class Case>
+int fuzz_one_input(const std::uint8_t* data, std::size_t size, Case&& fuzz_case, const char* name) {
+  ByteSource source({data, size});
+  CaseLog log;
+  fuzz_case(source, log);
+  if (!log.violations().empty()) {
+    std::fprintf(stderr, "%s case broke a property:\n%s", name, log.report().c_str());
+    std::abort();
+  }
+  return 0;
 }
 
 }  // namespace spar::fuzz

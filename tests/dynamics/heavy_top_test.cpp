@@ -28,16 +28,23 @@ struct TopRun {
   double max_constraint_residual = 0.0;
 };
 
-TopRun run_top(double h, long steps, double rho) {
+/// The classic top with gravity, on a spherical joint at its tip (the origin): its body's node.
+int add_top(core::Model& model, solvers::ConstraintList& joints) {
   const top::TopParameters p = top::classic_top();
-  core::Model model;
   const int body = model.rigid_body(model.add_rigid_body(
       {.center_of_mass = p.center_of_mass, .mass = p.mass, .inertia = p.inertia})).node;
   model.set_gravity(p.gravity);
-  solvers::ConstraintList joints;
   joints.push_back(std::make_unique<joints::SphericalJoint>(
       joints::Attachment{.node = body, .offset = -p.center_of_mass},
       joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, model.state()));
+  return body;
+}
+
+TopRun run_top(double h, long steps, double rho) {
+  const top::TopParameters p = top::classic_top();
+  core::Model model;
+  solvers::ConstraintList joints;
+  const int body = add_top(model, joints);
   // Newton to round-off (last increment ≤ 1e-12 rad): its error must not show in the errors of
   // h/8 (≥ 1e-5).
   solvers::GeneralizedAlpha integrator(model, std::move(joints),
@@ -143,13 +150,8 @@ TEST_CASE("heavy top: initialize() during a run restarts from accelerations cons
   // which left ½ h (Ω × v̇) in the constrained directions: 4.6e1 m/s² here.
   const top::TopParameters p = top::classic_top();
   core::Model model;
-  const int body = model.rigid_body(model.add_rigid_body(
-      {.center_of_mass = p.center_of_mass, .mass = p.mass, .inertia = p.inertia})).node;
-  model.set_gravity(p.gravity);
   solvers::ConstraintList joints;
-  joints.push_back(std::make_unique<joints::SphericalJoint>(
-      joints::Attachment{.node = body, .offset = -p.center_of_mass},
-      joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, model.state()));
+  const int body = add_top(model, joints);
   solvers::GeneralizedAlpha integrator(model, std::move(joints),
                                        {.time_step = 1e-3, .tolerance = 1e-24, .constraint_tolerance = 1e-12,
                                         .residual_tolerance = 1e-10});
@@ -174,13 +176,8 @@ namespace {
 std::vector<Eigen::VectorXd> top_multipliers(double h, bool perturbed_start) {
   const top::TopParameters p = top::classic_top();
   core::Model model;
-  const int body = model.rigid_body(model.add_rigid_body(
-      {.center_of_mass = p.center_of_mass, .mass = p.mass, .inertia = p.inertia})).node;
-  model.set_gravity(p.gravity);
   solvers::ConstraintList joints;
-  joints.push_back(std::make_unique<joints::SphericalJoint>(
-      joints::Attachment{.node = body, .offset = -p.center_of_mass},
-      joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, model.state()));
+  const int body = add_top(model, joints);
   solvers::GeneralizedAlpha integrator(model, std::move(joints),
                                        {.time_step = h, .tolerance = 1e-24, .constraint_tolerance = 1e-13,
                                         .residual_tolerance = 1e-11,
