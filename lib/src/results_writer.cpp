@@ -536,6 +536,7 @@ struct ResultsWriter::Impl {
   /// Each shape's vertices x + R c and, if the layout has velocities, their velocities
   /// ẋ + R (Ω × c) (Ω material).
   void buffer_shapes(const ResultsStep& step) {
+    if (shape_corners.empty()) return;  // a layout without shapes may have steps without a configuration
     const Configuration& q = *step.configuration;
     for (std::size_t k = 0; k < shape_corners.size(); ++k) {
       const auto node = static_cast<std::size_t>(layout.rigid_bodies[k].node);
