@@ -91,6 +91,11 @@ struct MultiplierErrors {
   double slider_acceleration = 0.0, coupler_angular_acceleration = 0.0;
 };
 
+/// The observed order of one error between two runs whose step sizes differ by 2.
+double order(const MultiplierErrors& coarse, const MultiplierErrors& fine, double MultiplierErrors::*error) {
+  return std::log2(coarse.*error / fine.*error);
+}
+
 MultiplierErrors run(double h, double t_from, double t_end, bool perturbed_start = false) {
   core::Model model;
   const auto rod = [](double m, double L) {
@@ -218,20 +223,20 @@ TEST_CASE("rigid slider-crank: multipliers are the Newton-Euler joint forces and
   }
   const MultiplierErrors& coarse = settled.front();
   const MultiplierErrors& fine = settled.back();
-  INFO("orders: torque " << std::log2(coarse.torque / fine.torque) << ", force at A "
-                         << std::log2(coarse.coupler_force / fine.coupler_force) << ", force at B "
-                         << std::log2(coarse.slider_force / fine.slider_force) << ", slider acceleration "
-                         << std::log2(coarse.slider_acceleration / fine.slider_acceleration)
+  INFO("orders: torque " << order(coarse, fine, &MultiplierErrors::torque) << ", force at A "
+                         << order(coarse, fine, &MultiplierErrors::coupler_force) << ", force at B "
+                         << order(coarse, fine, &MultiplierErrors::slider_force) << ", slider acceleration "
+                         << order(coarse, fine, &MultiplierErrors::slider_acceleration)
                          << ", coupler angular acceleration "
-                         << std::log2(coarse.coupler_angular_acceleration / fine.coupler_angular_acceleration));
-  CHECK(std::log2(coarse.torque / fine.torque) >= 1.8);
-  CHECK(std::log2(coarse.coupler_force / fine.coupler_force) >= 1.8);
-  CHECK(std::log2(coarse.slider_force / fine.slider_force) >= 1.8);
+                         << order(coarse, fine, &MultiplierErrors::coupler_angular_acceleration));
+  CHECK(order(coarse, fine, &MultiplierErrors::torque) >= 1.8);
+  CHECK(order(coarse, fine, &MultiplierErrors::coupler_force) >= 1.8);
+  CHECK(order(coarse, fine, &MultiplierErrors::slider_force) >= 1.8);
   CHECK(fine.torque <= 1e-5);
   CHECK(fine.coupler_force <= 1e-5);
   CHECK(fine.slider_force <= 1e-5);
-  CHECK(std::log2(coarse.slider_acceleration / fine.slider_acceleration) >= 1.8);
-  CHECK(std::log2(coarse.coupler_angular_acceleration / fine.coupler_angular_acceleration) >= 1.8);
+  CHECK(order(coarse, fine, &MultiplierErrors::slider_acceleration) >= 1.8);
+  CHECK(order(coarse, fine, &MultiplierErrors::coupler_angular_acceleration) >= 1.8);
   CHECK(fine.slider_acceleration <= 1e-5);
   CHECK(fine.coupler_angular_acceleration <= 1e-5);
 }
@@ -257,13 +262,13 @@ TEST_CASE("rigid slider-crank: with perturbed starting values the multipliers ar
   }
   const MultiplierErrors& coarse = from_start.front();
   const MultiplierErrors& fine = from_start.back();
-  INFO("orders from t = 0: torque " << std::log2(coarse.torque / fine.torque) << ", force at A "
-                                    << std::log2(coarse.coupler_force / fine.coupler_force) << ", force at B "
-                                    << std::log2(coarse.slider_force / fine.slider_force) << "; at h = 1.25e-4: "
+  INFO("orders from t = 0: torque " << order(coarse, fine, &MultiplierErrors::torque) << ", force at A "
+                                    << order(coarse, fine, &MultiplierErrors::coupler_force) << ", force at B "
+                                    << order(coarse, fine, &MultiplierErrors::slider_force) << "; at h = 1.25e-4: "
                                     << fine.torque << ", " << fine.coupler_force << ", " << fine.slider_force);
-  CHECK(std::log2(coarse.torque / fine.torque) >= 1.8);
-  CHECK(std::log2(coarse.coupler_force / fine.coupler_force) >= 1.8);
-  CHECK(std::log2(coarse.slider_force / fine.slider_force) >= 1.8);
+  CHECK(order(coarse, fine, &MultiplierErrors::torque) >= 1.8);
+  CHECK(order(coarse, fine, &MultiplierErrors::coupler_force) >= 1.8);
+  CHECK(order(coarse, fine, &MultiplierErrors::slider_force) >= 1.8);
   CHECK(fine.torque <= 5e-5);
   CHECK(fine.coupler_force <= 5e-5);
   CHECK(fine.slider_force <= 5e-5);
