@@ -35,18 +35,31 @@ SlidingCable<Dim>::SlidingCable(Model& model, const SlidingCableParameters& para
       xs.push_back(k * standard_length_);
     }
   }
-  for (double x : xs) {
-    Eigen::VectorXd node = Eigen::VectorXd::Zero(2 * Dim);
-    node(0) = x;
-    node(Dim) = 1.0;
-    chain_.push_back(model.add_vector(node));
-    materials_.push_back(model.add_vector(Eigen::VectorXd::Constant(1, x)));
-  }
   weights_.assign(N, Eigen::Vector4d::Ones());
+  if (parameters_.shape) {
+    if constexpr (Dim == 3)
+      throw Error("a curved shape for a spatial cable", where, "give shapes to planar cables (SlidingCable<2>)");
+    reference_ = std::make_shared<const CableReference>(parameters_.shape(xs));
+    if (reference_->breakpoints() != xs)
+      throw Error("the shape has breakpoints other than the mesh's " + std::to_string(xs.size()), where,
+                  "cut the shape at the breakpoints it is given");
+    for (int k = 0; k < N; ++k) weights_[k] = reference_->weights(k);
+  }
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    Eigen::VectorXd node = Eigen::VectorXd::Zero(2 * Dim);
+    if (reference_) {
+      node = reference_->node(static_cast<int>(i));
+    } else {
+      node(0) = xs[i];
+      node(Dim) = 1.0;
+    }
+    chain_.push_back(model.add_vector(node));
+    materials_.push_back(model.add_vector(Eigen::VectorXd::Constant(1, xs[i])));
+  }
   fixed_lengths_.resize(N);
   for (int k = 0; k < N; ++k) {
     fixed_lengths_[k] = xs[k + 1] - xs[k];
-    element_index_.push_back(model.add_element(make_element(k, k == slider_ - 1 || k == slider_)));
+    element_index_.push_back(model.add_element(make_element(model.state(), k, k == slider_ - 1 || k == slider_)));
   }
   mass_element_ = model.add_element(std::make_unique<PointMassElement>(PointMassParameters{
       .block = chain_[slider_], .dimension = Dim, .mass = parameters_.slider_mass, .name = "sliding mass"}));
@@ -54,8 +67,9 @@ SlidingCable<Dim>::SlidingCable(Model& model, const SlidingCableParameters& para
 }
 
 template <int Dim>
-std::unique_ptr<Element> SlidingCable<Dim>::make_element(int k, bool ale) const {
+std::unique_ptr<Element> SlidingCable<Dim>::make_element(const Configuration& q, int k, bool ale) const {
   RancfCableParameters p;
+  p.reference = reference_;
   p.node_a = chain_[k];
   p.node_b = chain_[k + 1];
   p.section = parameters_.section;
@@ -68,6 +82,7 @@ std::unique_ptr<Element> SlidingCable<Dim>::make_element(int k, bool ale) const 
     return std::make_unique<AleRancfCableElement<Dim>>(p);
   }
   p.length = fixed_lengths_[k];
+  p.material_start = q.vector(materials_[k])(0);
   return std::make_unique<RancfCableElement<Dim>>(p);
 }
 
@@ -189,7 +204,7 @@ void SlidingCable<Dim>::release(Model& model, Eigen::MatrixXd& P) {
   fixed_lengths_[k_kept] = l;
   released_ = true;
   slider_ = -1;
-  model.replace_element(element_index_[k_kept], make_element(k_kept, false));
+  model.replace_element(element_index_[k_kept], make_element(q, k_kept, false));
 }
 
 template <int Dim>
@@ -278,9 +293,9 @@ std::optional<LengthControlEvent> SlidingCable<Dim>::control_length(Model& model
   weights_[k_near] = event.split_weights_near;
   weights_[k_merged] = event.merged_weights;
   fixed_lengths_[far_element] = standard_length_;
-  model.replace_element(element_index_[far_element], make_element(far_element, false));
-  model.replace_element(element_index_[k_near], make_element(k_near, true));
-  model.replace_element(element_index_[k_merged], make_element(k_merged, true));
+  model.replace_element(element_index_[far_element], make_element(q, far_element, false));
+  model.replace_element(element_index_[k_near], make_element(q, k_near, true));
+  model.replace_element(element_index_[k_merged], make_element(q, k_merged, true));
   event.description = std::string(d == 1 ? "slider moving +x" : "slider moving -x") +
                       ": split element " + std::to_string(k_grow) + " at u_H = " + std::to_string(u_h) +
                       ", merged across node block " + std::to_string(chain_[s]);

@@ -148,3 +148,33 @@ TEST_CASE("rancf_shape_function_derivatives: values and three derivatives", "[ig
             1e-7 * std::max(1.0, s.col(d).cwiseAbs().maxCoeff()));
   }
 }
+
+TEST_CASE("degree elevation and Möbius reparameterization keep the curve", "[iga]") {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    const RationalBezier<3> cubic = sample_cubic(seed);
+    const RationalBezier<3> quartic = elevate(cubic);
+    REQUIRE(quartic.degree() == 4);
+    const double rho = 0.4 + 0.3 * seed;
+    const RationalBezier<3> moved = reparameterize(cubic, rho);
+    const NurbsCurve<3> original = as_nurbs(cubic), reparameterized = as_nurbs(moved);
+    for (int j = 0; j <= 20; ++j) {
+      const double u = j / 20.0, t = rho * u / (rho * u + 1.0 - u);  // r̃(u) = r(t(u))
+      // Round-off of a few de Casteljau levels on O(1) coordinates.
+      CHECK((quartic.point(u) - cubic.point(u)).norm() < 1e-14);
+      CHECK((moved.point(u) - cubic.point(t)).norm() < 1e-14);
+    }
+    // The end derivatives scale by ρ at u = 0 and by 1/ρ at u = 1.
+    const Eigen::Matrix<double, 3, 2> d0 = original.derivatives(0.0, 1), d1 = original.derivatives(1.0, 1);
+    CHECK((reparameterized.derivatives(0.0, 1).col(1) - rho * d0.col(1)).norm() < 1e-13 * d0.col(1).norm());
+    CHECK((reparameterized.derivatives(1.0, 1).col(1) - d1.col(1) / rho).norm() < 1e-13 * d1.col(1).norm());
+  }
+  // The rational quadratic arc of A7.1 elevated is 000 eq. (43)'s cubic: w1 = w2 = (1 + 2 cos(θ/2))/3.
+  const double theta = 0.7;
+  RationalBezier<2> arc{RationalBezier<2>::Points(2, 3), Eigen::Vector3d(1.0, std::cos(theta / 2), 1.0)};
+  arc.points << 1.0, 1.0, std::cos(theta), 0.0, std::tan(theta / 2), std::sin(theta);
+  const RationalBezier<2> cubic = elevate(arc);
+  CHECK(cubic.weights(1) / cubic.weights(0) == Approx((1 + 2 * std::cos(theta / 2)) / 3).epsilon(1e-15));
+  CHECK(cubic.weights(2) / cubic.weights(0) == Approx((1 + 2 * std::cos(theta / 2)) / 3).epsilon(1e-15));
+  for (int j = 0; j <= 10; ++j) CHECK(std::abs(cubic.point(j / 10.0).norm() - 1.0) < 1e-15);
+  CHECK_THROWS_WITH(reparameterize(cubic, 0.0), Contains("ρ = 0"));
+}

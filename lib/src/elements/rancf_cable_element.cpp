@@ -5,6 +5,7 @@
 
 #include "rancf_kernel.hpp"
 
+#include <array>
 #include <cmath>
 #include <type_traits>
 
@@ -40,6 +41,13 @@ void check_parameters(const RancfCableParameters& p, bool ale, const char* where
       throw Error("weight w" + std::to_string(i) + " = " + std::to_string(p.weights(i)) +
                       " is not a finite number > 0",
                   where, "give positive weights (000 eq. (9))");
+  if (p.reference && Dim == 3)
+    throw Error("a curved reference shape for a spatial cable", where,
+                "give the reference to planar (2D) cables: a spatial curvature vector has no "
+                "material frame to keep its reference direction in");
+  if (p.reference && !std::isfinite(p.material_start))
+    throw Error("material start " + std::to_string(p.material_start) + " is not finite", where,
+                "give the material coordinate of node A");
   if (p.quadrature_points < 2 || p.quadrature_points > 16)
     throw Error(std::to_string(p.quadrature_points) + " Gauss points", where,
                 "use 2 … 16 points (5 integrates the ANCF mass matrix and strain energy exactly)");
@@ -77,6 +85,10 @@ RancfCableElement<Dim>::RancfCableElement(const RancfCableParameters& parameters
     : parameters_(parameters), blocks_{parameters.node_a, parameters.node_b} {
   check_parameters<Dim>(parameters_, false, "core::RancfCableElement");
   table_ = rancf::quadrature_table(parameters_.weights, parameters_.quadrature_points);
+  if (parameters_.reference)
+    for (const rancf::QuadraturePoint& p : table_)
+      reference_table_.push_back(
+          parameters_.reference->at(parameters_.material_start + p.u * parameters_.length));
   // 000 eq. (19) with constant l: M = ρA l ∫₀¹ SᵀS du = m ⊗ I, m_ij = ρA l ∫ σ_i σ_j du (eq. R9).
   shape_mass_.setZero();
   for (const rancf::QuadraturePoint& p : table_) {
@@ -105,8 +117,15 @@ void RancfCableElement<Dim>::compute(const ElementInput& in, const ElementReques
   if (viscous) gather(q, blocks_, *in.velocity, rate);
   const auto internal = [&]<class T>(const rancf::Nodal<T, Dim>& e, const rancf::Nodal<T, Dim>& e_dot,
                                      rancf::Nodal<T, Dim>& force) {
-    T grad_l(0.0), f_a(0.0), f_b(0.0);
-    const T energy = rancf::strain_energy<T, Dim>(parameters_.section, table_, e, T(l), force, grad_l);
+    T grad_l(0.0), f_a(0.0), f_b(0.0), grad_material[2] = {T(0.0), T(0.0)};
+    std::array<ReferenceStrain<T>, 16> reference;
+    for (std::size_t g = 0; g < reference_table_.size(); ++g) {
+      const ReferenceStrain<double>& r = reference_table_[g];
+      reference[g] = {T(r.axial), T(r.axial_slope), T(r.curvature), T(r.curvature_slope)};
+    }
+    const T energy = rancf::strain_energy<T, Dim>(parameters_.section, table_, e, T(l), force, grad_l,
+                                                  reference_table_.empty() ? nullptr : reference.data(),
+                                                  grad_material);
     if (viscous)
       rancf::viscous_force<T, Dim>(parameters_.section, table_, e, T(l), e_dot, T(0.0), T(0.0), force,
                                    f_a, f_b);
@@ -190,11 +209,19 @@ void ale_residual(const RancfCableParameters& parameters,
   const T l = x_b - x_a;
   rancf::Nodal<T, Dim> f_e = zero_nodal<T, Dim>();
   T f_l(0.0);
-  // U and V depend on x_A, x_B only through l (eqs. R5, R6): ∂/∂x_A = −∂/∂l, ∂/∂x_B = ∂/∂l.
-  energy.strain = value_of(rancf::strain_energy<T, Dim>(parameters.section, table, e, l, f_e, f_l));
+  // U and V depend on x_A, x_B through l (eqs. R5, R6): ∂/∂x_A = −∂/∂l, ∂/∂x_B = ∂/∂l; with a
+  // reference shape U also depends on them through the Gauss points' material coordinates
+  // x_g = x_A + u_g l (eq. R5a).
+  std::array<ReferenceStrain<T>, 16> reference;
+  if (parameters.reference)
+    for (std::size_t k = 0; k < table.size(); ++k) reference[k] = parameters.reference->at(T(x_a + T(table[k].u) * l));
+  T grad_material[2] = {T(0.0), T(0.0)};
+  energy.strain = value_of(rancf::strain_energy<T, Dim>(parameters.section, table, e, l, f_e, f_l,
+                                                        parameters.reference ? reference.data() : nullptr,
+                                                        grad_material));
   energy.gravity = value_of(rancf::gravity_potential<T, Dim>(parameters.section.mass_per_length,
                                                              table, e, l, g, f_e, f_l));
-  T f_a = -f_l, f_b = f_l;
+  T f_a = grad_material[0] - f_l, f_b = grad_material[1] + f_l;
   if (dynamic) {
     const auto e_dot = nodal<T, Dim>(v.template head<4 * Dim>());
     const auto e_acc = nodal<T, Dim>(a.template head<4 * Dim>());

@@ -5,6 +5,7 @@
 // element moves through the material (ALE). Templated on the scalar so the elements can evaluate
 // it with dual numbers (core/dual.hpp) for their exact Jacobians.
 
+#include <spar/core/cable_reference.hpp>
 #include <spar/core/dual.hpp>
 #include <spar/core/elements/rancf_cable_element.hpp>
 #include <spar/iga/quadrature.hpp>
@@ -84,32 +85,56 @@ Vec<T, 3> cross_gradient_b(const Vec<T, 3>& a, const Eigen::Matrix<T, 3, 1>& c) 
   return cross(c, a);
 }
 
-/// The strain energy U(e, l) = l ∫₀¹ [EA/2 ε² + EI/2 |k|²] du of eq. (R5), with
+/// The strain energy U(e, l) = l ∫₀¹ [EA/2 (ε − ε₀)² + EI/2 |k − k₀|²] du of eq. (R5), with
 /// ε = (|r_u|²/l² − 1)/2 (000 eq. (19), Cauchy–Green, r_x = r_u/l) and the curvature vector
 /// k = r_x × r_xx/|r_x|³ = r_u × r_uu/|r_u|³ (|k| = κ of 000 eq. (19)); adds its gradient to
-/// grad_e (per nodal vector) and grad_l.
+/// grad_e (per nodal vector) and grad_l. Without a reference (nullptr) ε₀ = 0 and k₀ = 0, as in
+/// 000. With one (planar cables; core/cable_reference.hpp, docs/rancf.md eq. R5a), reference[g]
+/// holds ε₀, κ₀ and their x-derivatives at the Gauss point's material coordinate
+/// x_g = x_A + u_g l, and the explicit gradient Σ_g l w_g ∂W/∂x_g ∂x_g/∂(x_A, x_B) is added to
+/// grad_material[0], [1] (∂x_g/∂x_A = 1 − u_g, ∂x_g/∂x_B = u_g; the ALE element's).
 template <class T, int Dim>
 T strain_energy(const RancfSection& section, const std::vector<QuadraturePoint>& table,
-                const Nodal<T, Dim>& e, const T& l, Nodal<T, Dim>& grad_e, T& grad_l) {
+                const Nodal<T, Dim>& e, const T& l, Nodal<T, Dim>& grad_e, T& grad_l,
+                const ReferenceStrain<T>* reference = nullptr, T* grad_material = nullptr) {
+  using std::sqrt;
   T energy(0.0);
   const T inv_l2 = T(1.0) / (l * l);
-  for (const QuadraturePoint& p : table) {
+  for (std::size_t g = 0; g < table.size(); ++g) {
+    const QuadraturePoint& p = table[g];
     const Vec<T, Dim> r_u = field(p, e, l, 1);
     const Vec<T, Dim> r_uu = field(p, e, l, 2);
     const T s = r_u.squaredNorm();
     const T eps = T(0.5) * (s * inv_l2 - T(1.0));
+    const T strain = reference ? T(eps - reference[g].axial) : eps;
     const auto c = cross(r_u, r_uu);
     const T inv_s3 = T(1.0) / (s * s * s);
     const T c2 = c.squaredNorm();
-    const T density = T(0.5 * section.axial_stiffness) * eps * eps +
-                      T(0.5 * section.bending_stiffness) * c2 * inv_s3;
+    T density = T(0.5 * section.axial_stiffness) * strain * strain +
+                T(0.5 * section.bending_stiffness) * c2 * inv_s3;
     // ∂W/∂r_u, ∂W/∂r_uu, ∂W/∂l at fixed (r_u, r_uu).
-    const Vec<T, Dim> W_u = r_u * (T(section.axial_stiffness) * eps * inv_l2 -
-                                   T(3.0 * section.bending_stiffness) * c2 * inv_s3 / s) +
-                            cross_gradient_a(r_uu, c) * (T(section.bending_stiffness) * inv_s3);
-    const Vec<T, Dim> W_uu = cross_gradient_b(r_u, c) * (T(section.bending_stiffness) * inv_s3);
-    const T W_l = -T(section.axial_stiffness) * eps * s * inv_l2 / l;
+    Vec<T, Dim> W_u = r_u * (T(section.axial_stiffness) * strain * inv_l2 -
+                             T(3.0 * section.bending_stiffness) * c2 * inv_s3 / s) +
+                      cross_gradient_a(r_uu, c) * (T(section.bending_stiffness) * inv_s3);
+    Vec<T, Dim> W_uu = cross_gradient_b(r_u, c) * (T(section.bending_stiffness) * inv_s3);
+    const T W_l = -T(section.axial_stiffness) * strain * s * inv_l2 / l;
     const T lw = l * p.weight;
+    if constexpr (Dim == 2)
+      if (reference) {
+        // EI/2 |k − k₀|² = EI/2 (c²/s³ − 2 k₀ c s^{-3/2} + k₀²): the terms in k₀, and
+        // ∂W/∂x_g = −EA (ε − ε₀) ε₀' − EI (k − k₀) κ₀'.
+        const double EI = section.bending_stiffness;
+        const Eigen::Matrix<T, 1, 1> k0(reference[g].curvature);
+        const T inv_s15 = T(1.0) / (s * sqrt(s));
+        const T k0_c = k0(0) * c(0);
+        density += T(0.5 * EI) * (k0(0) * k0(0) - T(2.0) * k0_c * inv_s15);
+        W_u += r_u * (T(3.0 * EI) * k0_c * inv_s15 / s) - cross_gradient_a(r_uu, k0) * (T(EI) * inv_s15);
+        W_uu -= cross_gradient_b(r_u, k0) * (T(EI) * inv_s15);
+        const T W_x = -T(section.axial_stiffness) * strain * reference[g].axial_slope -
+                      T(EI) * (c(0) * inv_s15 - k0(0)) * reference[g].curvature_slope;
+        grad_material[0] += lw * W_x * T(1.0 - p.u);
+        grad_material[1] += lw * W_x * T(p.u);
+      }
     energy += lw * density;
     for (int k = 0; k < 4; ++k)
       grad_e[k] += (W_u * sigma(p, k, 1, l) + W_uu * sigma(p, k, 2, l)) * lw;

@@ -102,6 +102,44 @@ BezierSplit<Dim> split(const RationalBezier<Dim>& curve, double u_h) {
   return {from_homogeneous(left), from_homogeneous(right)};
 }
 
+/// The same curve one degree higher (The NURBS Book eq. (5.36) on one Bézier segment), in
+/// homogeneous coordinates: Q_i = (i/(n+1)) P^w_{i−1} + (1 − i/(n+1)) P^w_i, i = 0 … n+1.
+/// A rational quadratic arc becomes the rational cubic a RANCF element holds (000 eq. (43)).
+template <int Dim>
+RationalBezier<Dim> elevate(const RationalBezier<Dim>& curve) {
+  curve.validate("iga::elevate");
+  const int n = curve.degree();
+  const Eigen::Matrix<double, Dim + 1, Eigen::Dynamic> P = curve.homogeneous();
+  Eigen::Matrix<double, Dim + 1, Eigen::Dynamic> Q(Dim + 1, n + 2);
+  Q.col(0) = P.col(0);
+  Q.col(n + 1) = P.col(n);
+  for (int i = 1; i <= n; ++i) {
+    const double a = static_cast<double>(i) / (n + 1);
+    Q.col(i) = a * P.col(i - 1) + (1.0 - a) * P.col(i);
+  }
+  RationalBezier<Dim> elevated;
+  elevated.weights = Q.row(Dim).transpose();
+  elevated.points = Q.template topRows<Dim>() * elevated.weights.cwiseInverse().asDiagonal();
+  return elevated;
+}
+
+/// The same curve under the Möbius reparameterization u ↦ ρu/(ρu + 1 − u) (The NURBS Book §6.4):
+/// the weights become w_i ρ^i, the control points stay. The end derivatives scale by ρ at u = 0
+/// and by 1/ρ at u = 1 (r'(0) = n w1/w0 (P1 − P0)), so a chain of pieces can be given continuous
+/// slopes without changing its shape.
+template <int Dim>
+RationalBezier<Dim> reparameterize(const RationalBezier<Dim>& curve, double rho) {
+  constexpr const char* where = "iga::reparameterize";
+  curve.validate(where);
+  if (!(rho > 0.0) || !std::isfinite(rho))
+    throw Error("Möbius factor ρ = " + detail::number(rho) + " is not a finite number > 0", where,
+                "give ρ > 0 (ρ = 1 keeps the parameterization)");
+  RationalBezier<Dim> result = curve;
+  double factor = 1.0;
+  for (Eigen::Index i = 0; i < result.weights.size(); ++i, factor *= rho) result.weights(i) *= factor;
+  return result;
+}
+
 /// A RANCF element: nodal coordinates e = [r_A; r_x^A; r_B; r_x^B] (000 eq. (4)), the weights of
 /// its rational cubic Bézier and its reference length l (material coordinate x = u·l).
 template <int Dim>

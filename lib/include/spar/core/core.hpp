@@ -28,6 +28,7 @@
 #include <spar/core/progress_bar.hpp>
 #include <spar/core/results_writer.hpp>
 #include <spar/core/section_integrals.hpp>
+#include <spar/core/cable_reference.hpp>
 #include <spar/core/sliding_cable.hpp>
 #include <spar/core/sparse_assembly.hpp>
 #include <spar/core/work_sharing.hpp>

@@ -3,7 +3,8 @@
 /// A cable with a sliding node and element length control (paper 000 §5; docs/rancf.md,
 /// "Sliding node and length control").
 ///
-/// The cable lies straight along +X from the origin. Every node is a vector block [r, r_x]; every
+/// The cable lies straight along +X from the origin, or along a given stress-free shape
+/// (SlidingCableParameters::shape, planar cables: core/cable_reference.hpp). Every node is a vector block [r, r_x]; every
 /// node has a scalar material-coordinate block, fixed (a Dirichlet dof) except at the sliding node.
 /// The two elements next to the sliding node are ALE-RANCF, the others fixed-length RANCF; a point
 /// mass on the sliding node is the lumped mass sliding without friction. The slope is continuous
@@ -28,6 +29,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +47,10 @@ struct SlidingCableParameters {
   int quadrature_points = 5;
   /// Reserve a free-particle block for the mass to leave the cable at a free end (release()).
   bool detachable = false;
+  /// The stress-free shape cut at the initial mesh's material breakpoints (N + 1 coordinates from
+  /// 0 to L), e.g. CableReference::circular_arc (000 §6.3). Empty: straight along +X from the
+  /// origin with no reference strains (000 as written). Planar cables only.
+  std::function<CableReference(const std::vector<double>& breakpoints)> shape;
 };
 
 /// One length-control event.
@@ -65,9 +71,9 @@ struct LengthControlEvent {
 template <int Dim>
 class SlidingCable {
 public:
-  /// Adds the cable's blocks and elements to `model` (straight along +X from the origin) and the
-  /// point mass; fixes the material coordinates of all nodes but the sliding one. Throws
-  /// spar::Error for N < 3 or a slider not strictly inside the cable.
+  /// Adds the cable's blocks and elements to `model` (straight along +X from the origin, or on
+  /// parameters.shape) and the point mass. Throws spar::Error for N < 3, a slider not strictly
+  /// inside the cable, or a shape that does not span [0, L] in N pieces (or on a spatial cable).
   SlidingCable(Model& model, const SlidingCableParameters& parameters);
 
   /// Node blocks [r, r_x] in order along the cable (changes at events).
@@ -81,6 +87,8 @@ public:
   double element_length(const Configuration& q, int k) const;
   /// The weights of element k.
   const Eigen::Vector4d& weights(int k) const { return weights_[k]; }
+  /// The stress-free shape, or null for a straight cable.
+  const std::shared_ptr<const CableReference>& reference() const { return reference_; }
   /// The centreline: `per_element` points per element plus the last end, (N·per_element + 1) × 3
   /// (z = 0 in 2D), along the cable.
   Eigen::MatrixXd sample_centerline(const Configuration& q, int per_element) const;
@@ -114,13 +122,14 @@ public:
   std::optional<LengthControlEvent> control_length(Model& model, double time, Eigen::MatrixXd& P);
 
 private:
-  std::unique_ptr<Element> make_element(int k, bool ale) const;
+  std::unique_ptr<Element> make_element(const Configuration& q, int k, bool ale) const;
 
   SlidingCableParameters parameters_;
   double standard_length_ = 0.0;
   std::vector<int> chain_, materials_, element_index_;
   std::vector<Eigen::Vector4d> weights_;
   std::vector<double> fixed_lengths_;
+  std::shared_ptr<const CableReference> reference_;
   int slider_ = 0;
   int particle_ = -1;
   int mass_element_ = -1;

@@ -18,12 +18,15 @@
 /// Both: axial strain ε = (r_xᵀ r_x − 1)/2 and curvature κ = |r_x × r_xx|/|r_x|³ (000 eq. (19))
 /// with energy ∫ (EA ε² + EI κ²)/2 dx and Kelvin–Voigt damping (000 eq. (17)), gravity ρA g, all
 /// by Gauss–Legendre quadrature in u. Stiffness and damping are exact: the residual is
-/// evaluated with dual numbers (core/dual.hpp).
+/// evaluated with dual numbers (core/dual.hpp). A planar cable may have a curved stress-free
+/// shape (RancfCableParameters::reference, core/cable_reference.hpp): ε − ε₀(x), κ − κ₀(x).
 
+#include <spar/core/cable_reference.hpp>
 #include <spar/core/element.hpp>
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,6 +64,12 @@ struct RancfCableParameters {
   Eigen::Vector4d weights = Eigen::Vector4d::Ones();  ///< w0…w3 > 0 (000 eq. (9))
   int quadrature_points = 5;                           ///< Gauss points in u, 2 … 16
   std::string name = "RANCF cable";
+  /// The stress-free curved shape of a planar cable (Dim = 2 only): its strains ε₀(x), κ₀(x) are
+  /// subtracted from ε and κ at the Gauss points' material coordinates. Null: straight and
+  /// unstretched, 000's strains as written.
+  std::shared_ptr<const CableReference> reference;
+  /// Fixed-length element with a reference: the material coordinate of node A (x = x_A + u l).
+  double material_start = 0.0;
 };
 
 template <int Dim>
@@ -83,6 +92,7 @@ private:
   RancfCableParameters parameters_;
   std::vector<int> blocks_;
   std::vector<rancf::QuadraturePoint> table_;
+  std::vector<ReferenceStrain<double>> reference_table_;  ///< ε₀, κ₀ at the Gauss points, or empty
   Eigen::Matrix4d shape_mass_;
 };
 
