@@ -35,7 +35,7 @@ inline std::optional<double> control_length(core::SlidingCable<2>& cable, core::
   events.push_back(*event);
   std::printf("t = %.4f s: %s; merged weights (%.4f, %.4f, %.4f)%s\n", event->time, event->description.c_str(),
               event->merged_weights(0), event->merged_weights(1), event->merged_weights(2),
-              event->merge_fallback ? " (fallback k = 1)" : "");
+              event->merge_fallback ? " (fallback k = 1)" : event->merge_bounded ? " (bounded)" : "");
   return integrator.energies().total();
 }
 
@@ -62,16 +62,17 @@ inline WeightStatistics weight_statistics(const std::vector<core::LengthControlE
 
 /// Writes the event log to the results file: one row per event — time, split element, its weights
 /// before, the two merged elements' weights before (next to the slider, beyond), the new
-/// far/near/merged weights, fallback, miss (28 columns).
+/// far/near/merged weights, fallback (000 eq. (38)), bounded (max_merge_weight), miss (29 columns).
 inline void write_length_control_log(core::ResultsWriter& results,
                                      const std::vector<core::LengthControlEvent>& events) {
   if (events.empty()) return;
-  Eigen::MatrixXd log(static_cast<Eigen::Index>(events.size()), 28);
+  Eigen::MatrixXd log(static_cast<Eigen::Index>(events.size()), 29);
   for (std::size_t i = 0; i < events.size(); ++i) {
     const core::LengthControlEvent& e = events[i];
     log.row(static_cast<Eigen::Index>(i)) << e.time, e.grown_element, e.grown_weights.transpose(),
         e.merged_near_weights.transpose(), e.merged_far_weights.transpose(), e.split_weights_far.transpose(),
-        e.split_weights_near.transpose(), e.merged_weights.transpose(), e.merge_fallback ? 1.0 : 0.0, e.merge_miss;
+        e.split_weights_near.transpose(), e.merged_weights.transpose(), e.merge_fallback ? 1.0 : 0.0,
+        e.merge_bounded ? 1.0 : 0.0, e.merge_miss;
   }
   results.write_constant("length_control_events", log, "s, 1",
                          "one row per length-control event: time (s), the grown element, then the weights "

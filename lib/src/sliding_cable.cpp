@@ -246,9 +246,10 @@ std::optional<LengthControlEvent> SlidingCable<Dim>::control_length(Model& model
   if (parameters_.rational) {
     const RancfMergeWeights merged = merge_rancf_weights<Dim>(
         e_merged, r_d, q.vector(materials_[m_a])(0), q.vector(materials_[deleted])(0),
-        q.vector(materials_[m_b])(0));
+        q.vector(materials_[m_b])(0), parameters_.max_merge_weight);
     event.merged_weights = merged.weights;
     event.merge_fallback = merged.fallback;
+    event.merge_bounded = merged.bounded;
     event.merge_miss = merged.miss;
   } else {
     event.merged_weights = Eigen::Vector4d::Ones();

@@ -149,3 +149,34 @@ TEST_CASE("a merge moves a spinning arc less with RANCF weights than with ANCF o
   CHECK(rancf.geometry < ancf.geometry);
   CHECK(rancf.energy < ancf.energy);
 }
+
+TEST_CASE("merging keeps the weights within a bound by shrinking them towards 1", "[rancf][merging]") {
+  // An arch A = 0, B = e_1 with slopes (1, ±1) and the deleted node well inside it, near the
+  // chord: the minimum-norm solution reaches it with k0 = 0.14 (1.12 and 1.41 for k1, k2).
+  Eigen::Matrix<double, 8, 1> e;
+  e << 0, 0, 1, 1, 1, 0, 1, -1;
+  const Eigen::Vector2d r_h(0.3, 0.1);
+  const core::RancfMergeWeights free = core::merge_rancf_weights<2>(e, r_h, 0.0, 0.3, 1.0);
+  INFO("unbounded weights " << free.weights.transpose());
+  REQUIRE_FALSE(free.fallback);
+  REQUIRE_FALSE(free.bounded);
+  REQUIRE(std::max(free.weights.maxCoeff(), 1.0 / free.weights.minCoeff()) > 4.0);
+  const core::RancfMergeWeights bounded = core::merge_rancf_weights<2>(e, r_h, 0.0, 0.3, 1.0, 4.0);
+  INFO("bounded weights " << bounded.weights.transpose());
+  CHECK(bounded.bounded);
+  CHECK(bounded.weights.maxCoeff() <= 4.0 * (1 + 1e-15));
+  CHECK(bounded.weights.minCoeff() >= 0.25 * (1 - 1e-15));
+  // On the segment from the unit weights to the free ones, with one weight on the bound.
+  const Eigen::Vector3d x = free.weights.head<3>() - Eigen::Vector3d::Ones();
+  const Eigen::Vector3d y = bounded.weights.head<3>() - Eigen::Vector3d::Ones();
+  const double t = y.dot(x) / x.squaredNorm();
+  CHECK(t > 0.0);
+  CHECK(t < 1.0);
+  CHECK((y - t * x).norm() <= 1e-14 * x.norm());
+  CHECK(std::min(std::abs(bounded.weights.head<3>().maxCoeff() - 4.0),
+                 std::abs(bounded.weights.head<3>().minCoeff() - 0.25)) <= 1e-14);
+  // Bounded, the merged curve misses H by more than the exact fit.
+  CHECK(free.miss <= 1e-12);
+  CHECK(bounded.miss > 1e-6);
+  CHECK_THROWS_AS(core::merge_rancf_weights<2>(e, r_h, 0.0, 0.3, 1.0, 0.5), Error);
+}

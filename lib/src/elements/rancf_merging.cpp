@@ -5,6 +5,7 @@
 
 #include <Eigen/QR>
 
+#include <algorithm>
 #include <string>
 
 namespace spar::core {
@@ -12,7 +13,10 @@ namespace spar::core {
 template <int Dim>
 RancfMergeWeights merge_rancf_weights(const Eigen::Matrix<double, 4 * Dim, 1>& e_ab,
                                       const Eigen::Matrix<double, Dim, 1>& r_h, double x_a,
-                                      double x_h, double x_b) {
+                                      double x_h, double x_b, double max_weight) {
+  if (!(max_weight >= 1.0))
+    throw Error("weight bound " + std::to_string(max_weight) + " is below 1", "core::merge_rancf_weights",
+                "give a bound ≥ 1 (infinity: 000's unbounded least squares)");
   if (!(x_a < x_h && x_h < x_b))
     throw Error("material coordinates x_A = " + std::to_string(x_a) + ", x_H = " + std::to_string(x_h) +
                     ", x_B = " + std::to_string(x_b) + " are not increasing",
@@ -31,8 +35,16 @@ RancfMergeWeights merge_rancf_weights(const Eigen::Matrix<double, 4 * Dim, 1>& e
   const Eigen::Vector3d x =
       Eigen::CompleteOrthogonalDecomposition<Eigen::Matrix<double, Dim, 3>>(A).solve(c - A * Eigen::Vector3d::Ones());
   RancfMergeWeights result;
-  const Eigen::Vector3d k = x + Eigen::Vector3d::Ones();
+  Eigen::Vector3d k = x + Eigen::Vector3d::Ones();
   result.fallback = !(k.minCoeff() > 0.0);  // eq. (38)
+  // The bound: k = 1 + t x, the largest t ≤ 1 with 1/max_weight ≤ k_i ≤ max_weight.
+  if (!result.fallback && (k.maxCoeff() > max_weight || k.minCoeff() < 1.0 / max_weight)) {
+    double t = 1.0;
+    for (int i = 0; i < 3; ++i)
+      t = std::min(t, x(i) > 0.0 ? (max_weight - 1.0) / x(i) : (1.0 / max_weight - 1.0) / x(i));
+    k = Eigen::Vector3d::Ones() + t * x;
+    result.bounded = true;
+  }
   result.weights << (result.fallback ? Eigen::Vector3d::Ones() : k), 1.0;
   const Eigen::Vector4d s = iga::rancf_shape_functions(u, result.weights, l);
   const Vec r_merged = s(0) * r_a + s(1) * rx_a + s(2) * r_b + s(3) * rx_b;
@@ -42,9 +54,9 @@ RancfMergeWeights merge_rancf_weights(const Eigen::Matrix<double, 4 * Dim, 1>& e
 
 template RancfMergeWeights merge_rancf_weights<2>(const Eigen::Matrix<double, 8, 1>&,
                                                   const Eigen::Matrix<double, 2, 1>&, double, double,
-                                                  double);
+                                                  double, double);
 template RancfMergeWeights merge_rancf_weights<3>(const Eigen::Matrix<double, 12, 1>&,
                                                   const Eigen::Matrix<double, 3, 1>&, double, double,
-                                                  double);
+                                                  double, double);
 
 }  // namespace spar::core
