@@ -24,6 +24,7 @@ struct SlidingMassRun {
   std::string example;  ///< the file stem of the outputs, e.g. "suspended_beam"
   std::string out;      ///< the output folder
   std::string element_kind;
+  std::string strategy;  ///< the iteration matrix (update | frozen | modified)
   int elements = 0;
   double h = 0.0, t_end = 0.0, rho_infinity = 1.0;
   int per_element = 10;  ///< centreline samples per element
@@ -132,7 +133,7 @@ inline void run_sliding_mass(core::SlidingCable<2>& cable, core::Model& model,
               max_kinetic, weights.count, weights.max, weights.min, weights.sigma);
   JsonSummary()
       .add("elements", run.elements).add("element_kind", run.element_kind).add("h", run.h)
-      .add("rho_inf", run.rho_infinity).add("t_end", integrator.time())
+      .add("rho_inf", run.rho_infinity).add("strategy", run.strategy).add("t_end", integrator.time())
       .add("length_control_events", static_cast<int>(events.size()))
       .add("min_element_length_ratio", events.empty() ? 0.0 : min_ratio)
       .add("max_element_length_ratio", events.empty() ? 0.0 : max_ratio)

@@ -45,6 +45,8 @@ int main(int argc, char** argv) try {
   const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
   const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
                                           examples::Range::between(0, 1));
+  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
+                                        {"update", "frozen", "modified"});
   const std::string out = cli.output_folder("--out", "results/falling_beam", "output folder");
   if (!cli.finish()) return 0;
   examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
@@ -70,6 +72,7 @@ int main(int argc, char** argv) try {
 
   // 3. The integrator; the mass slides at 0.4 m/s relative to the beam at rest (ṙ = ẋ r_x).
   solvers::GeneralizedAlpha integrator(model, {}, {.time_step = h, .spectral_radius = rho_infinity,
+                                                   .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
                                                    .tolerance = 1e-16, .residual_tolerance = 1e-9});
   integrator.set_velocity(cable.chain()[cable.slider()], Eigen::Vector4d(0.4, 0.0, 0.0, 0.0));
   integrator.set_velocity(cable.materials()[cable.slider()], Eigen::VectorXd::Constant(1, 0.4));
@@ -211,6 +214,7 @@ int main(int argc, char** argv) try {
               weights.count, weights.max, weights.min, weights.sigma, separation_time);
   examples::JsonSummary()
       .add("elements", elements).add("element_kind", kind).add("h", h).add("rho_inf", rho_infinity)
+      .add("strategy", strategy)
       .add("t_end", integrator.time())
       .add("length_control_events", static_cast<int>(events.size()))
       .add("min_element_length_ratio", events.empty() ? 0.0 : min_ratio)

@@ -41,6 +41,8 @@ int main(int argc, char** argv) try {
   const double t_end = cli.number("--t-end", 3.0, "end time [s]", examples::Range::positive());
   const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
                                           examples::Range::between(0, 1));
+  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
+                                        {"update", "frozen", "modified"});
   const std::string out = cli.output_folder("--out", "results/semicircular_beam", "output folder");
   if (!cli.finish()) return 0;
   examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
@@ -87,12 +89,13 @@ int main(int argc, char** argv) try {
 
   // 4. The integrator, from rest.
   solvers::GeneralizedAlpha integrator(model, {}, {.time_step = h, .spectral_radius = rho_infinity,
+                                                   .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
                                                    .tolerance = 1e-16, .residual_tolerance = 1e-9});
   integrator.initialize();
 
   // 5. Integrate, control the lengths, record, report (examples/common/sliding_mass_run.hpp).
   examples::run_sliding_mass(cable, model, integrator,
-                             {.example = "semicircular_beam", .out = out, .element_kind = kind,
+                             {.example = "semicircular_beam", .out = out, .element_kind = kind, .strategy = strategy,
                               .elements = elements, .h = h, .t_end = t_end, .rho_infinity = rho_infinity});
   return 0;
 } catch (const std::exception& error) {
