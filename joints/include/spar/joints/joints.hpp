@@ -5,6 +5,7 @@
 
 #include <spar/joints/active_until.hpp>
 #include <spar/joints/ancf_spherical_joint.hpp>
+#include <spar/joints/sliding_node_slopes.hpp>
 #include <spar/joints/angle_driver.hpp>
 #include <spar/joints/attachment.hpp>
 #include <spar/joints/clamp_joint.hpp>
