@@ -6,6 +6,7 @@
 //   suspended_beam                                   (ALE-RANCF, 3 elements, h = 1e-3 s, 2 s)
 //   suspended_beam --element ale-ancf
 //   suspended_beam --elements 6 --h 5e-4 --out results/suspended_beam_6
+//   suspended_beam --slopes discontinuous             (a hinge at the mass, 000 eq. (40))
 //
 // Description:
 //   L = 1 m, circular section r = 0.01 m, ρ = 7200 kg/m³, E = 20 MPa, no damping (000 §6.1–6.2);
@@ -40,6 +41,10 @@ int main(int argc, char** argv) try {
                                           examples::Range::between(0, 1));
   const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
                                         {"update", "frozen", "modified"});
+  const std::string slopes = cli.text("--slopes", "continuous",
+                                      "at the sliding node (000 eq. (40)): continuous (one slope) or discontinuous "
+                                      "(a slope per side, equal magnitudes: a hinge)",
+                                      {"continuous", "discontinuous"});
   const std::string out = cli.output_folder("--out", "results/suspended_beam", "output folder");
   if (!cli.finish()) return 0;
   examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
@@ -53,12 +58,20 @@ int main(int argc, char** argv) try {
                                                   .bending_stiffness = young * inertia,
                                                   .mass_per_length = density * area},
                                       .slider_position = 0.1, .slider_mass = 5.0,
-                                      .rational = kind == "ale-rancf"});
+                                      .rational = kind == "ale-rancf",
+                                      .two_sided_slider = slopes == "discontinuous"});
   model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
   examples::pin_both_ends(cable, model);
+  // A slope per side of the sliding node, of equal magnitudes (000 eqs. (39)–(40)).
+  solvers::ConstraintList constraints;
+  if (slopes == "discontinuous")
+    constraints.push_back(std::make_unique<joints::SlidingNodeSlopes>(cable.chain()[cable.slider()],
+                                                                      cable.right_slider_node(), 2,
+                                                                      joints::SlopeCondition::discontinuous,
+                                                                      model.state()));
 
   // 3. The integrator, from rest.
-  solvers::GeneralizedAlpha integrator(model, {}, {.time_step = h, .spectral_radius = rho_infinity,
+  solvers::GeneralizedAlpha integrator(model, std::move(constraints), {.time_step = h, .spectral_radius = rho_infinity,
                                                    .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
                                                    .tolerance = 1e-16, .residual_tolerance = 1e-9});
   integrator.initialize();

@@ -20,6 +20,9 @@ SlidingCable<Dim>::SlidingCable(Model& model, const SlidingCableParameters& para
   const int N = parameters_.elements;
   const double L = parameters_.length, x_s = parameters_.slider_position;
   if (N < 3) throw Error(std::to_string(N) + " elements", where, "use at least 3 elements");
+  if (parameters_.two_sided_slider && parameters_.detachable)
+    throw Error("a two-sided sliding node that may leave the cable", where,
+                "use two_sided_slider or detachable, not both (release() joins one node block to the end)");
   if (!(x_s > 0.0 && x_s < L))
     throw Error("slider position " + std::to_string(x_s) + " is not inside (0, L)", where,
                 "start the sliding node strictly inside the cable");
@@ -57,6 +60,7 @@ SlidingCable<Dim>::SlidingCable(Model& model, const SlidingCableParameters& para
     materials_.push_back(model.add_vector(Eigen::VectorXd::Constant(1, xs[i])));
   }
   fixed_lengths_.resize(N);
+  if (parameters_.two_sided_slider) right_slider_node_ = model.add_vector(model.state().vector(chain_[slider_]));
   for (int k = 0; k < N; ++k) {
     fixed_lengths_[k] = xs[k + 1] - xs[k];
     element_index_.push_back(model.add_element(make_element(model.state(), k, k == slider_ - 1 || k == slider_)));
@@ -67,11 +71,16 @@ SlidingCable<Dim>::SlidingCable(Model& model, const SlidingCableParameters& para
 }
 
 template <int Dim>
+int SlidingCable<Dim>::node_block(int position, int k) const {
+  return position == slider_ && k == slider_ && right_slider_node_ >= 0 ? right_slider_node_ : chain_[position];
+}
+
+template <int Dim>
 std::unique_ptr<Element> SlidingCable<Dim>::make_element(const Configuration& q, int k, bool ale) const {
   RancfCableParameters p;
   p.reference = reference_;
-  p.node_a = chain_[k];
-  p.node_b = chain_[k + 1];
+  p.node_a = node_block(k, k);
+  p.node_b = node_block(k + 1, k);
   p.section = parameters_.section;
   p.weights = weights_[k];
   p.quadrature_points = parameters_.quadrature_points;
@@ -100,7 +109,7 @@ Eigen::MatrixXd SlidingCable<Dim>::sample_centerline(const Configuration& q, int
       if (j == per_element && k + 1 < N) continue;
       const Eigen::Vector4d s = iga::rancf_shape_functions(static_cast<double>(j) / per_element, weights_[k],
                                                            element_length(q, k));
-      const auto a = q.vector(chain_[k]), b = q.vector(chain_[k + 1]);
+      const auto a = q.vector(node_block(k, k)), b = q.vector(node_block(k + 1, k));
       points.row(k * per_element + j).head<Dim>() =
           (s(0) * a.head(Dim) + s(1) * a.tail(Dim) + s(2) * b.head(Dim) + s(3) * b.tail(Dim)).transpose();
     }
@@ -113,7 +122,7 @@ double SlidingCable<Dim>::deformed_length(const Configuration& q) const {
   double total = 0.0;
   for (int k = 0; k < static_cast<int>(weights_.size()); ++k) {
     const double l = element_length(q, k);
-    const auto a = q.vector(chain_[k]), b = q.vector(chain_[k + 1]);
+    const auto a = q.vector(node_block(k, k)), b = q.vector(node_block(k + 1, k));
     for (std::size_t g = 0; g < rule.points.size(); ++g) {
       const Eigen::Matrix4d sh = iga::rancf_shape_function_derivatives(0.5 * (rule.points[g] + 1.0), weights_[k]);
       const Eigen::Matrix<double, Dim, 1> r_u =
@@ -226,7 +235,7 @@ std::optional<LengthControlEvent> SlidingCable<Dim>::control_length(Model& model
   // Old growing element in its own order [A, B] (A left).
   const int a = d == 1 ? far : s, b = d == 1 ? s : far;
   Eigen::Matrix<double, 4 * Dim, 1> e;
-  e << q.vector(chain_[a]), q.vector(chain_[b]);
+  e << q.vector(node_block(a, k_grow)), q.vector(node_block(b, k_grow));
   const double x_a = q.vector(materials_[a])(0), x_b = q.vector(materials_[b])(0), l = x_b - x_a;
   const double u_h = d == 1 ? standard_length_ / l : 1.0 - standard_length_ / l;
   const RancfSplit<Dim> split = split_rancf_element<Dim>(
@@ -235,7 +244,7 @@ std::optional<LengthControlEvent> SlidingCable<Dim>::control_length(Model& model
   // Merge the elements on both sides of D into one from S to `beyond` (000 §4.2).
   const int m_a = d == 1 ? s : beyond, m_b = d == 1 ? beyond : s;
   Eigen::Matrix<double, 4 * Dim, 1> e_merged;
-  e_merged << q.vector(chain_[m_a]), q.vector(chain_[m_b]);
+  e_merged << q.vector(node_block(m_a, m_a)), q.vector(node_block(m_b, m_a));
   const Eigen::Matrix<double, Dim, 1> r_d = q.vector(chain_[deleted]).template head<Dim>();
   LengthControlEvent event;
   event.time = time;
@@ -271,7 +280,7 @@ std::optional<LengthControlEvent> SlidingCable<Dim>::control_length(Model& model
   const int n = q.dof_count();
   P = Eigen::MatrixXd::Identity(n, n);
   std::vector<int> columns;
-  for (int block : {chain_[a], chain_[b], materials_[a], materials_[b]})
+  for (int block : {node_block(a, k_grow), node_block(b, k_grow), materials_[a], materials_[b]})
     for (int i = 0; i < q.blocks[block].size; ++i) columns.push_back(q.blocks[block].offset + i);
   const int node_offset = q.blocks[chain_[deleted]].offset, x_offset = q.blocks[materials_[deleted]].offset;
   for (int r = 0; r <= 2 * Dim; ++r) {

@@ -3,6 +3,7 @@
 // count constant, energy is conserved between events (ρ∞ = 1), and each event changes the energy
 // only by the merge.
 #include <spar/core/sliding_cable.hpp>
+#include <spar/joints/sliding_node_slopes.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 
 #include <catch2/catch.hpp>
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 using namespace spar;
 
@@ -23,9 +25,12 @@ struct SlidingRun {
   double slider = 0.0;                      ///< final material coordinate of the slider
   double max_kinetic = 0.0;
   double first_event_time = 0.0, drift_before = 0.0;
+  double kink = 0.0;                        ///< the largest angle between the slider's two slopes (rad)
 };
 
-SlidingRun run_suspended(bool rational, int elements, double h, double t_end) {
+/// `slopes`: a node block per side of the slider coupled by 000 eq. (40); none: one block.
+SlidingRun run_suspended(bool rational, int elements, double h, double t_end,
+                         std::optional<joints::SlopeCondition> slopes = std::nullopt) {
   // 000 §6.1/6.2: L = 1 m, r = 0.01 m, ρ = 7200 kg/m³, E = 20 MPa; both ends pinned; 5 kg at
   // 0.1 m, at rest.
   const double r = 0.01, E = 20e6, rho = 7200;
@@ -34,16 +39,22 @@ SlidingRun run_suspended(bool rational, int elements, double h, double t_end) {
   core::SlidingCable<2> cable(model, {.length = 1.0, .elements = elements,
                                       .section = {.axial_stiffness = E * A, .bending_stiffness = E * I,
                                                   .mass_per_length = rho * A},
-                                      .slider_position = 0.1, .slider_mass = 5.0, .rational = rational});
+                                      .slider_position = 0.1, .slider_mass = 5.0, .rational = rational,
+                                      .two_sided_slider = slopes.has_value()});
   model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
   const core::Configuration& q = model.state();
+  std::vector<std::unique_ptr<joints::Constraint>> constraints;
+  if (slopes)
+    constraints.push_back(std::make_unique<joints::SlidingNodeSlopes>(
+        cable.chain()[cable.slider()], cable.right_slider_node(), 2, *slopes, q));
   std::vector<int> fixed = cable.fixed_dofs(q);
   for (int end : {cable.chain().front(), cable.chain().back()})
     for (int i = 0; i < 2; ++i) fixed.push_back(q.blocks[end].offset + i);
   std::sort(fixed.begin(), fixed.end());
   model.set_fixed_dofs(fixed);
-  solvers::GeneralizedAlpha integrator(model, {}, {.time_step = h, .spectral_radius = 1.0, .tolerance = 1e-16,
-                                                   .residual_tolerance = 1e-9});
+  solvers::GeneralizedAlpha integrator(model, std::move(constraints),
+                                       {.time_step = h, .spectral_radius = 1.0, .tolerance = 1e-16,
+                                        .residual_tolerance = 1e-9});
   integrator.initialize();
   SlidingRun run;
   double reference = integrator.energies().total();
@@ -53,6 +64,11 @@ SlidingRun run_suspended(bool rational, int elements, double h, double t_end) {
     integrator.step();
     const solvers::Energies energies = integrator.energies();
     run.max_kinetic = std::max(run.max_kinetic, energies.kinetic);
+    if (slopes) {
+      const Eigen::Vector2d left = q.vector(cable.chain()[cable.slider()]).tail<2>();
+      const Eigen::Vector2d right = q.vector(cable.right_slider_node()).tail<2>();
+      run.kink = std::max(run.kink, std::atan2(std::abs(left.x() * right.y() - left.y() * right.x()), left.dot(right)));
+    }
     drifts.push_back(std::fabs(energies.total() - reference));
     Eigen::MatrixXd P;
     if (run.events == 0) run.drift_before = drifts.back();
@@ -168,4 +184,29 @@ TEST_CASE("falling beam: the mass leaves the free end between 0.55 and 0.7 s", "
   CHECK(separation > 0.55);
   CHECK(separation < 0.7);
   CHECK(cable.chain().size() == 20u);  // one node left with the mass's end element
+}
+
+TEST_CASE("a two-sided sliding node: continuous slopes as one node, discontinuous ones a hinge",
+          "[rancf][sliding]") {
+  // 000 eqs. (39)–(40). With the continuous condition the two node blocks move as one: the same
+  // events and the slider where the one-block cable has it (to the Newton tolerance, amplified by
+  // 1 s of motion). With the discontinuous one the cable kinks at the 5 kg mass, the energy is
+  // still conserved between events as O(h²), and the length control works the same way.
+  const SlidingRun one = run_suspended(true, 6, 1e-3, 1.0);
+  const SlidingRun two = run_suspended(true, 6, 1e-3, 1.0, joints::SlopeCondition::continuous);
+  INFO("one block: " << one.events << " events, slider " << one.slider << "; two: " << two.events << ", "
+       << two.slider << ", kink " << two.kink);
+  CHECK(two.events == one.events);
+  CHECK(std::abs(two.slider - one.slider) <= 1e-6);
+  CHECK(two.kink <= 1e-9);
+  const SlidingRun coarse = run_suspended(true, 6, 1e-3, 1.0, joints::SlopeCondition::discontinuous);
+  const SlidingRun fine = run_suspended(true, 6, 5e-4, 1.0, joints::SlopeCondition::discontinuous);
+  INFO("hinge: " << fine.events << " events, kink " << fine.kink << " rad, drift between events "
+       << coarse.max_drift_between_events << ", " << fine.max_drift_between_events << ", slider " << fine.slider
+       << ", lengths [" << fine.min_ratio << ", " << fine.max_ratio << "]");
+  CHECK(fine.events >= 2);
+  CHECK(fine.kink > 0.05);
+  CHECK(fine.max_drift_between_events <= coarse.max_drift_between_events / 2.5);
+  CHECK(fine.min_ratio >= 0.5 - 0.01);
+  CHECK(fine.max_ratio <= 1.5 + 0.01);
 }

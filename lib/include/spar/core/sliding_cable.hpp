@@ -52,6 +52,11 @@ struct SlidingCableParameters {
   int quadrature_points = 5;
   /// Reserve a free-particle block for the mass to leave the cable at a free end (release()).
   bool detachable = false;
+  /// The sliding node holds a node block per side (000 eq. (39)): the element left of it uses
+  /// chain()[slider()], the one right of it right_slider_node(); the caller couples them with
+  /// joints::SlidingNodeSlopes (000 eq. (40): continuous or discontinuous slopes). False: one node
+  /// block, the slopes continuous by construction. Not with `detachable`.
+  bool two_sided_slider = false;
   /// The stress-free shape cut at the initial mesh's material breakpoints (N + 1 coordinates from
   /// 0 to L), e.g. CableReference::circular_arc (000 §6.3). Empty: straight along +X from the
   /// origin with no reference strains (000 as written). Planar cables only.
@@ -88,6 +93,8 @@ public:
   const std::vector<int>& materials() const { return materials_; }
   /// Position of the sliding node in chain() (−1 once the mass has left).
   int slider() const { return slider_; }
+  /// The sliding node's block for the element right of it (two_sided_slider), else −1.
+  int right_slider_node() const { return right_slider_node_; }
   double standard_length() const { return standard_length_; }
   /// The reference length of element k (between chain()[k] and chain()[k + 1]).
   double element_length(const Configuration& q, int k) const;
@@ -129,6 +136,8 @@ public:
 
 private:
   std::unique_ptr<Element> make_element(const Configuration& q, int k, bool ale) const;
+  /// The node block element k uses at chain position `position` (k or k + 1).
+  int node_block(int position, int k) const;
 
   SlidingCableParameters parameters_;
   double standard_length_ = 0.0;
@@ -141,6 +150,7 @@ private:
   int mass_element_ = -1;
   bool released_ = false;
   int dead_node_ = -1, dead_material_ = -1;  ///< the sliding node's blocks after release()
+  int right_slider_node_ = -1;
 };
 
 extern template class SlidingCable<2>;
