@@ -155,11 +155,11 @@ int main(int argc, char** argv) try {
       max_jump = std::max(max_jump, std::fabs(*after - energy.total()));
       segment_reference = *after;
     }
-    // Departure: the element to the free end is shorter than 0.05 L_std, or than four steps of
-    // the slider's travel (it would vanish within the next steps).
+    // Departure: the element to the free end is shorter than 0.1 L_std, or than four steps of
+    // the slider's travel (SlidingCable::release_length).
     const double slider_rate =
         cable.released() ? 0.0 : integrator.velocity()(model.state().blocks[cable.materials()[cable.slider()]].offset);
-    const double min_length = std::max(0.05 * cable.standard_length(), 4 * h * std::fabs(slider_rate));
+    const double min_length = cable.release_length(h, slider_rate);
     if (!cable.released() && cable.near_end(model.state(), 0, min_length)) {
       // The mass has slid back to the clamp: a collision this model does not have. Stop here.
       support_time = integrator.time();

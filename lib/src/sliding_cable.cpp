@@ -149,6 +149,11 @@ std::vector<int> SlidingCable<Dim>::fixed_dofs(const Configuration& q) const {
 }
 
 template <int Dim>
+double SlidingCable<Dim>::release_length(double time_step, double material_rate) const {
+  return std::max(0.1 * standard_length_, 4 * time_step * std::fabs(material_rate));
+}
+
+template <int Dim>
 bool SlidingCable<Dim>::near_end(const Configuration& q, int end, double min_length) const {
   const int last = static_cast<int>(chain_.size()) - 1;
   if (released_) return false;
