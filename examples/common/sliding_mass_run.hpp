@@ -7,6 +7,7 @@
 
 #include <cli.hpp>
 #include <energy_balance.hpp>
+#include <sliding_mass_options.hpp>
 #include <length_control_report.hpp>
 
 #include <algorithm>
@@ -23,10 +24,7 @@ namespace spar::examples {
 struct SlidingMassRun {
   std::string example;  ///< the file stem of the outputs, e.g. "suspended_beam"
   std::string out;      ///< the output folder
-  std::string element_kind;
-  std::string strategy;  ///< the iteration matrix (update | frozen | modified)
-  int elements = 0;
-  double h = 0.0, t_end = 0.0, rho_infinity = 1.0;
+  SlidingMassOptions options;
   int per_element = 10;  ///< centreline samples per element
 };
 
@@ -57,11 +55,8 @@ inline void run_sliding_mass(core::SlidingCable<2>& cable, core::Model& model,
                                      .description = "Newton iterations (linear solves) of the step", .integer = true}},
                                    energy_balance_layout()),
                                .probes = {{.name = "slider", .unit = "m", .description = "the sliding mass, inertial frame"}},
-                               .centerline_points = {run.elements * run.per_element + 1}});
-  results.write_attribute("example", run.example);
-  results.write_attribute("element", run.element_kind);
-  results.write_attribute("time_step", run.h);
-  results.write_attribute("rho_infinity", run.rho_infinity);
+                               .centerline_points = {run.options.elements * run.per_element + 1}});
+  write_attributes(results, run.example, run.options);
   std::ofstream csv(run.out + "/" + run.example + ".csv"), shapes(run.out + "/" + run.example + "_shapes.csv");
   csv.precision(12);
   shapes.precision(12);
@@ -89,7 +84,7 @@ inline void run_sliding_mass(core::SlidingCable<2>& cable, core::Model& model,
   };
   record();
   const auto run_start = std::chrono::steady_clock::now();
-  while (integrator.time() < run.t_end - 0.5 * run.h) {
+  while (integrator.time() < run.options.t_end - 0.5 * run.options.h) {
     integrator.step();
     const solvers::Energies energy = integrator.energies();
     max_kinetic = std::max(max_kinetic, energy.kinetic);
@@ -106,7 +101,7 @@ inline void run_sliding_mass(core::SlidingCable<2>& cable, core::Model& model,
     // element (no node left to delete on that side) and before the first event (initial mesh).
     const int s = cable.slider(), last = static_cast<int>(cable.chain().size()) - 1;
     if (!events.empty())
-      for (int k = 0; k < run.elements; ++k) {
+      for (int k = 0; k < run.options.elements; ++k) {
         if ((k == s - 1 || k == s) && (s - 1 == 0 || s + 1 == last)) continue;
         const double ratio = cable.element_length(model.state(), k) / cable.standard_length();
         min_ratio = std::min(min_ratio, ratio);
@@ -127,13 +122,13 @@ inline void run_sliding_mass(core::SlidingCable<2>& cable, core::Model& model,
               "(length control %.4f s); %zu length-control events; slider at x = %.4f m; energy: max |E - E0| "
               "%.3e, max drift between events %.3e, largest jump %.3e of the largest kinetic energy %.4f J; "
               "merged weights: set %zu, max %.3f, min %.3f, sigma %.3f\n",
-              run.example.c_str(), run.element_kind.c_str(), run.elements, run.h, run.rho_infinity,
+              run.example.c_str(), run.options.kind.c_str(), run.options.elements, run.options.h, run.options.rho_infinity,
               integrator.time(), counters.steps, counters.newton_iterations, wall, control_seconds, events.size(),
               slider_x, max_deviation / max_kinetic, max_segment_drift / max_kinetic, max_jump / max_kinetic,
               max_kinetic, weights.count, weights.max, weights.min, weights.sigma);
   JsonSummary()
-      .add("elements", run.elements).add("element_kind", run.element_kind).add("h", run.h)
-      .add("rho_inf", run.rho_infinity).add("strategy", run.strategy).add("t_end", integrator.time())
+      .add("elements", run.options.elements).add("element_kind", run.options.kind).add("h", run.options.h)
+      .add("rho_inf", run.options.rho_infinity).add("strategy", run.options.strategy).add("t_end", integrator.time())
       .add("length_control_events", static_cast<int>(events.size()))
       .add("min_element_length_ratio", events.empty() ? 0.0 : min_ratio)
       .add("max_element_length_ratio", events.empty() ? 0.0 : max_ratio)

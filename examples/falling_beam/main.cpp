@@ -23,6 +23,7 @@
 #include <spar/spar.hpp>
 
 #include <cli.hpp>
+#include <sliding_mass_options.hpp>
 #include <length_control_report.hpp>
 #include <energy_balance.hpp>
 
@@ -39,28 +40,21 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "falling_beam: a lumped mass sliding off a falling cantilever (000 §6.1)");
-  const std::string kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf", {"ale-rancf", "ale-ancf"});
-  const int elements = cli.integer("--elements", 20, "elements", 3, examples::element_limit(examples::bytes_per_element));
-  const double h = cli.number("--h", 1e-3, "time step [s]", examples::Range::positive());
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
-  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
-                                          examples::Range::between(0, 1));
-  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
-                                        {"update", "frozen", "modified"});
+  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 20, 1.0);
   const std::string out = cli.output_folder("--out", "results/falling_beam", "output folder");
   if (!cli.finish()) return 0;
-  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  examples::time_steps(o.h, o.t_end);  // a span of no steps or of too many is refused
 
   // 2. The beam, the sliding mass (and the block it flies off in) and the clamp.
   const double radius = 0.01, young = 20e6, density = 7200;
   const double area = std::numbers::pi * radius * radius, inertia = area * radius * radius / 4;
   core::Model model;
-  core::SlidingCable<2> cable(model, {.length = 1.0, .elements = elements,
+  core::SlidingCable<2> cable(model, {.length = 1.0, .elements = o.elements,
                                       .section = {.axial_stiffness = young * area,
                                                   .bending_stiffness = young * inertia,
                                                   .mass_per_length = density * area},
                                       .slider_position = 0.1, .slider_mass = 0.8,
-                                      .rational = kind == "ale-rancf", .detachable = true});
+                                      .rational = o.kind == "ale-rancf", .detachable = true});
   model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
   const auto set_fixed = [&]() {
     std::vector<int> fixed = cable.fixed_dofs(model.state());
@@ -71,8 +65,8 @@ int main(int argc, char** argv) try {
   set_fixed();
 
   // 3. The integrator; the mass slides at 0.4 m/s relative to the beam at rest (ṙ = ẋ r_x).
-  solvers::GeneralizedAlpha integrator(model, {}, {.time_step = h, .spectral_radius = rho_infinity,
-                                                   .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
+  solvers::GeneralizedAlpha integrator(model, {}, {.time_step = o.h, .spectral_radius = o.rho_infinity,
+                                                   .iteration_matrix = solvers::iteration_matrix_from_string(o.strategy),
                                                    .tolerance = 1e-16, .residual_tolerance = 1e-9});
   integrator.set_velocity(cable.chain()[cable.slider()], Eigen::Vector4d(0.4, 0.0, 0.0, 0.0));
   integrator.set_velocity(cable.materials()[cable.slider()], Eigen::VectorXd::Constant(1, 0.4));
@@ -96,11 +90,8 @@ int main(int argc, char** argv) try {
                                    examples::energy_balance_layout()),
                                .probes = {{.name = "mass", .unit = "m", .description = "the sliding mass, inertial frame"},
                                           {.name = "right_end", .unit = "m", .description = "the beam's free end"}},
-                               .centerline_points = {elements * per_element + 1}});
-  results.write_attribute("example", "falling_beam");
-  results.write_attribute("element", kind);
-  results.write_attribute("time_step", h);
-  results.write_attribute("rho_infinity", rho_infinity);
+                               .centerline_points = {o.elements * per_element + 1}});
+  examples::write_attributes(results, "falling_beam", o);
   std::ofstream csv(out + "/falling_beam.csv"), shapes(out + "/falling_beam_shapes.csv");
   csv.precision(12);
   shapes.precision(12);
@@ -117,7 +108,7 @@ int main(int argc, char** argv) try {
   const auto centerline = [&](const core::Configuration& q) {
     Eigen::MatrixXd points = cable.sample_centerline(q, per_element);
     const Eigen::Index rows = points.rows();
-    points.conservativeResize(elements * per_element + 1, 3);
+    points.conservativeResize(o.elements * per_element + 1, 3);
     for (Eigen::Index i = rows; i < points.rows(); ++i) points.row(i) = points.row(rows - 1);
     return points;
   };
@@ -142,7 +133,7 @@ int main(int argc, char** argv) try {
   };
   record();
   const auto run_start = std::chrono::steady_clock::now();
-  while (integrator.time() < t_end - 0.5 * h) {
+  while (integrator.time() < o.t_end - 0.5 * o.h) {
     integrator.step();
     const solvers::Energies energy = integrator.energies();
     max_kinetic = std::max(max_kinetic, energy.kinetic);
@@ -159,7 +150,7 @@ int main(int argc, char** argv) try {
     // the slider's travel (SlidingCable::release_length).
     const double slider_rate =
         cable.released() ? 0.0 : integrator.velocity()(model.state().blocks[cable.materials()[cable.slider()]].offset);
-    const double min_length = cable.release_length(h, slider_rate);
+    const double min_length = cable.release_length(o.h, slider_rate);
     if (!cable.released() && cable.near_end(model.state(), 0, min_length)) {
       // The mass has slid back to the clamp: a collision this model does not have. Stop here.
       support_time = integrator.time();
@@ -208,13 +199,13 @@ int main(int argc, char** argv) try {
               "iterations, %.3f s (length control %.4f s); %zu length-control events; "
               "energy: max |E - E0| %.3e, max drift between events %.3e, largest jump %.3e of the largest "
               "kinetic energy %.4f J; merged weights: set %zu, max %.3f, min %.3f, sigma %.3f; the mass left at t = %.4f s\n",
-              kind.c_str(), elements, h, rho_infinity, integrator.time(), counters.steps,
+              o.kind.c_str(), o.elements, o.h, o.rho_infinity, integrator.time(), counters.steps,
               counters.newton_iterations, wall, control_seconds, events.size(),
               max_deviation / max_kinetic, max_segment_drift / max_kinetic, max_jump / max_kinetic, max_kinetic,
               weights.count, weights.max, weights.min, weights.sigma, separation_time);
   examples::JsonSummary()
-      .add("elements", elements).add("element_kind", kind).add("h", h).add("rho_inf", rho_infinity)
-      .add("strategy", strategy)
+      .add("elements", o.elements).add("element_kind", o.kind).add("h", o.h).add("rho_inf", o.rho_infinity)
+      .add("strategy", o.strategy)
       .add("t_end", integrator.time())
       .add("length_control_events", static_cast<int>(events.size()))
       .add("min_element_length_ratio", events.empty() ? 0.0 : min_ratio)

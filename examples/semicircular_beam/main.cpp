@@ -35,17 +35,10 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "semicircular_beam: a lumped mass sliding on a suspended semicircular beam (000 §6.3)");
-  const std::string kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf", {"ale-rancf", "ale-ancf"});
-  const int elements = cli.integer("--elements", 16, "elements", 3, examples::element_limit(examples::bytes_per_element));
-  const double h = cli.number("--h", 1e-3, "time step [s]", examples::Range::positive());
-  const double t_end = cli.number("--t-end", 3.0, "end time [s]", examples::Range::positive());
-  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
-                                          examples::Range::between(0, 1));
-  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
-                                        {"update", "frozen", "modified"});
+  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 16, 3.0);
   const std::string out = cli.output_folder("--out", "results/semicircular_beam", "output folder");
   if (!cli.finish()) return 0;
-  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  examples::time_steps(o.h, o.t_end);  // a span of no steps or of too many is refused
 
   // 2. The stress-free shape: the lower semicircle, cut at the first mesh's material coordinates.
   const double R = 2.0, length = std::numbers::pi * R;
@@ -75,8 +68,8 @@ int main(int argc, char** argv) try {
   const double radius = 0.02, young = 200e6, density = 7200;
   const double area = std::numbers::pi * radius * radius, inertia = area * radius * radius / 4;
   core::Model model;
-  const bool rational = kind == "ale-rancf";
-  core::SlidingCable<2> cable(model, {.length = length, .elements = elements,
+  const bool rational = o.kind == "ale-rancf";
+  core::SlidingCable<2> cable(model, {.length = length, .elements = o.elements,
                                       .section = {.axial_stiffness = young * area,
                                                   .bending_stiffness = young * inertia,
                                                   .mass_per_length = density * area},
@@ -88,15 +81,14 @@ int main(int argc, char** argv) try {
   examples::pin_both_ends(cable, model);
 
   // 4. The integrator, from rest.
-  solvers::GeneralizedAlpha integrator(model, {}, {.time_step = h, .spectral_radius = rho_infinity,
-                                                   .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
+  solvers::GeneralizedAlpha integrator(model, {}, {.time_step = o.h, .spectral_radius = o.rho_infinity,
+                                                   .iteration_matrix = solvers::iteration_matrix_from_string(o.strategy),
                                                    .tolerance = 1e-16, .residual_tolerance = 1e-9});
   integrator.initialize();
 
   // 5. Integrate, control the lengths, record, report (examples/common/sliding_mass_run.hpp).
   examples::run_sliding_mass(cable, model, integrator,
-                             {.example = "semicircular_beam", .out = out, .element_kind = kind, .strategy = strategy,
-                              .elements = elements, .h = h, .t_end = t_end, .rho_infinity = rho_infinity});
+                             {.example = "semicircular_beam", .out = out, .options = o});
   return 0;
 } catch (const std::exception& error) {
   std::fprintf(stderr, "%s\n", error.what());

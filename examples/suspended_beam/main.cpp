@@ -33,32 +33,25 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "suspended_beam: a lumped mass sliding on a pinned-pinned beam (000 §6.2)");
-  const std::string kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf", {"ale-rancf", "ale-ancf"});
-  const int elements = cli.integer("--elements", 3, "elements", 3, examples::element_limit(examples::bytes_per_element));
-  const double h = cli.number("--h", 1e-3, "time step [s]", examples::Range::positive());
-  const double t_end = cli.number("--t-end", 2.0, "end time [s]", examples::Range::positive());
-  const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
-                                          examples::Range::between(0, 1));
-  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
-                                        {"update", "frozen", "modified"});
+  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 3, 2.0);
   const std::string slopes = cli.text("--slopes", "continuous",
                                       "at the sliding node (000 eq. (40)): continuous (one slope) or discontinuous "
                                       "(a slope per side, equal magnitudes: a hinge)",
                                       {"continuous", "discontinuous"});
   const std::string out = cli.output_folder("--out", "results/suspended_beam", "output folder");
   if (!cli.finish()) return 0;
-  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  examples::time_steps(o.h, o.t_end);  // a span of no steps or of too many is refused
 
   // 2. The beam, the sliding mass and the supports.
   const double radius = 0.01, young = 20e6, density = 7200;
   const double area = std::numbers::pi * radius * radius, inertia = area * radius * radius / 4;
   core::Model model;
-  core::SlidingCable<2> cable(model, {.length = 1.0, .elements = elements,
+  core::SlidingCable<2> cable(model, {.length = 1.0, .elements = o.elements,
                                       .section = {.axial_stiffness = young * area,
                                                   .bending_stiffness = young * inertia,
                                                   .mass_per_length = density * area},
                                       .slider_position = 0.1, .slider_mass = 5.0,
-                                      .rational = kind == "ale-rancf",
+                                      .rational = o.kind == "ale-rancf",
                                       .two_sided_slider = slopes == "discontinuous"});
   model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
   examples::pin_both_ends(cable, model);
@@ -71,15 +64,14 @@ int main(int argc, char** argv) try {
                                                                       model.state()));
 
   // 3. The integrator, from rest.
-  solvers::GeneralizedAlpha integrator(model, std::move(constraints), {.time_step = h, .spectral_radius = rho_infinity,
-                                                   .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
+  solvers::GeneralizedAlpha integrator(model, std::move(constraints), {.time_step = o.h, .spectral_radius = o.rho_infinity,
+                                                   .iteration_matrix = solvers::iteration_matrix_from_string(o.strategy),
                                                    .tolerance = 1e-16, .residual_tolerance = 1e-9});
   integrator.initialize();
 
   // 4. Integrate, control the lengths, record, report (examples/common/sliding_mass_run.hpp).
   examples::run_sliding_mass(cable, model, integrator,
-                             {.example = "suspended_beam", .out = out, .element_kind = kind, .strategy = strategy, .elements = elements,
-                              .h = h, .t_end = t_end, .rho_infinity = rho_infinity});
+                             {.example = "suspended_beam", .out = out, .options = o});
   return 0;
 } catch (const std::exception& error) {
   std::fprintf(stderr, "%s\n", error.what());
