@@ -164,6 +164,13 @@ void AncfElementTables<transverse>::compute_invariants() {
       invariant_quartic.noalias() += poisson_correction * weight[g] / moment[0][0][0][0] * mean * mean.transpose();
     }
   }
+  invariant_quartic_pairs.resize(pairs, pairs);
+  for (int r = 0; r < pairs; ++r)
+    for (int c = 0; c < pairs; ++c) {
+      const int cd = pair_first[c] + n * pair_second[c];
+      invariant_quartic_pairs(r, c) = (pair_first[c] == pair_second[c] ? 1.0 : 2.0) *
+                                      invariant_quartic(pair_first[r] + n * pair_second[r], cd);
+    }
 }
 
 // Section kernel --------------------------------------------------------------------------------
@@ -357,11 +364,16 @@ double AncfBeamElement<transverse>::invariant_force(const Vector& e, Vector& Q, 
   constexpr int n = Tables::n;
   const Tables& t = *tables_;
   const Eigen::Map<const Eigen::Matrix<double, 3, n>> nodes(e.data());
-  // Γ_ab = e_a · e_b; K₂(e) = κ₂ ⊗ I₃ with κ₂_ab = Σ_cd τ_abcd Γ_cd (001 eq. 32, eq. A19).
+  // Γ_ab = e_a · e_b; K₂(e) = κ₂ ⊗ I₃ with κ₂_ab = Σ_cd τ_abcd Γ_cd (001 eq. 32, eq. A19),
+  // summed over the symmetric pairs a ≤ b, c ≤ d (Tables::invariant_quartic_pairs).
+  constexpr int pairs = Tables::pairs;
   const Eigen::Matrix<double, n, n> gram = nodes.transpose() * nodes;
+  Eigen::Matrix<double, pairs, 1> gram_pairs, k2_pairs;
+  for (int k = 0; k < pairs; ++k) gram_pairs(k) = gram(Tables::pair_first[k], Tables::pair_second[k]);
+  k2_pairs.noalias() = t.invariant_quartic_pairs * gram_pairs;
   Eigen::Matrix<double, n, n> k2;
-  Eigen::Map<Eigen::Matrix<double, n * n, 1>>(k2.data()).noalias() =
-      t.invariant_quartic * Eigen::Map<const Eigen::Matrix<double, n * n, 1>>(gram.data());
+  for (int k = 0; k < pairs; ++k)
+    k2(Tables::pair_first[k], Tables::pair_second[k]) = k2(Tables::pair_second[k], Tables::pair_first[k]) = k2_pairs(k);
   const Eigen::Matrix<double, n, n> k = t.invariant_linear + k2;
   // Q = (K₁ + K₂(e)) e (001 eq. 36 with eq. 23).
   Eigen::Map<Eigen::Matrix<double, 3, n>>(Q.data()).noalias() = nodes * k;
