@@ -228,14 +228,26 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
   F[2].setZero();
   F[2].col(0) = u.segment<3>(6);
   // E = Σ_ij φ_i φ_j Ê_ij with Ê_ij = ¼(F_iᵀF_j + F_jᵀF_i) − ½ I δ_i0 δ_j0; Ŝ_ij = λ tr Ê_ij I + 2μ Ê_ij
-  // (eq. A13).
+  // (eq. A13). F₁ = b e₀ᵀ and F₂ = c e₀ᵀ have one column, which leaves Ê₀₀ = ½(F₀ᵀF₀ − I),
+  // Ê₀ⱼ = ¼(w e₀ᵀ + e₀ wᵀ) with w = F₀ᵀ x_j, and Ê_ij = ½ (x_i · x_j) e₀e₀ᵀ for i, j ≥ 1 (x₁ = b,
+  // x₂ = c).
   Matrix3 E[3][3], S[3][3], Sbar[3][3];
+  E[0][0].noalias() = 0.5 * F[0].transpose() * F[0];
+  E[0][0].diagonal().array() -= 0.5;
+  for (int j = 1; j < 3; ++j) {
+    const Eigen::Vector3d w = 0.25 * F[0].transpose() * F[j].col(0);
+    E[0][j].setZero();
+    E[0][j].col(0) = w;
+    E[0][j].row(0) += w.transpose();
+    for (int i = 1; i <= j; ++i) {
+      E[i][j].setZero();
+      E[i][j](0, 0) = 0.5 * F[i].col(0).dot(F[j].col(0));
+    }
+  }
   for (int i = 0; i < 3; ++i)
     for (int j = i; j < 3; ++j) {
-      Matrix3 Eij = 0.25 * (F[i].transpose() * F[j] + F[j].transpose() * F[i]);
-      if (i == 0 && j == 0) Eij.diagonal().array() -= 0.5;
-      E[i][j] = E[j][i] = Eij;
-      S[i][j] = S[j][i] = lambda * Eij.trace() * Matrix3::Identity() + 2 * mu * Eij;
+      E[j][i] = E[i][j];
+      S[i][j] = S[j][i] = lambda * E[i][j].trace() * Matrix3::Identity() + 2 * mu * E[i][j];
     }
   // S̄_pq = ∫ φ_p φ_q S dA = Σ_ij M_pqij Ŝ_ij.
   double W = 0.0;
@@ -249,11 +261,11 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
       W += (p == q ? 0.5 : 1.0) * E[p][q].cwiseProduct(s).sum();  // W̄ = ½ Σ_pq Ê_pq : S̄_pq
     }
   // ∂W̄/∂u_v = ∫ φ_p P e_α dA = Σ_k F_k S̄_pk e_α (P = F S; eq. A14).
+  // F_k S̄ e_α = x_k S̄(0, α) for k ≥ 1.
   for (int v = 0; v < 5; ++v) {
     const int p = variable_phi[v], alpha = variable_column[v];
-    Eigen::Vector3d g = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 3; ++k) g += F[k] * Sbar[p][k].col(alpha);
-    gradient.segment<3>(3 * v) = g;
+    gradient.segment<3>(3 * v) = F[0] * Sbar[p][0].col(alpha) + Sbar[p][1](0, alpha) * F[1].col(0) +
+                                 Sbar[p][2](0, alpha) * F[2].col(0);
   }
   if (hessian == nullptr)
     return poisson_correction == 0.0 ? W : W - subtract_poisson_correction(M, poisson_correction, u, gradient, nullptr);
