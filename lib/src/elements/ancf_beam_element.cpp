@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <span>
 #include <utility>
 
 namespace spar::core {
@@ -403,6 +404,14 @@ double AncfBeamElement<transverse>::invariant_force(const Vector& e, Vector& Q, 
   return t.invariant_constant + (0.5 * t.invariant_linear + 0.25 * k2).cwiseProduct(gram).sum();
 }
 
+/// The node vectors that row v of the coefficients B touches (its other entries are zero by
+/// construction): a = r₀′ the axial vectors, b = r_y′ and g = r_y the y vectors, c and h the z ones.
+template <int transverse>
+std::span<const int> AncfBeamElement<transverse>::row_vectors(int v) {
+  if (v == 0) return Shape::axial_vectors;
+  return v == 1 || v == 3 ? std::span<const int>(Shape::y_vectors) : std::span<const int>(Shape::z_vectors);
+}
+
 template <int transverse>
 double AncfBeamElement<transverse>::gerstmayr_force(const Vector& e, Vector& Q, Matrix* K) const {
   constexpr int n = Tables::n;
@@ -416,13 +425,18 @@ double AncfBeamElement<transverse>::gerstmayr_force(const Vector& e, Vector& Q, 
   Eigen::Matrix<double, 15, 15> hessian;
   Matrix3 HB[5][n];
   for (int g = 0; g < Tables::points; ++g) {
-    // u = (B ⊗ I₃) e: the columns a, b, c, g, h of nodes · Bᵀ (eq. A7).
+    // u = (B ⊗ I₃) e: the columns a, b, c, g, h of nodes · Bᵀ (eq. A7), over B's non-zeros.
     const Eigen::Matrix<double, 5, n>& B = t.coefficients[g];
-    Eigen::Map<Eigen::Matrix<double, 3, 5>>(u.data()).noalias() = nodes * B.transpose();
+    for (int v = 0; v < 5; ++v) {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      for (int l : row_vectors(v)) sum += B(v, l) * nodes.col(l);
+      u.template segment<3>(3 * v) = sum;
+    }
     U += t.weight[g] * ancf_section_energy(t.moment, t.lambda, t.mu, t.poisson_correction, u, gradient,
                                            K != nullptr ? &hessian : nullptr);
     // Q = ∫ (B ⊗ I₃)ᵀ ∂W̄/∂u dx (eq. A16).
-    force.noalias() += t.weight[g] * Eigen::Map<const Eigen::Matrix<double, 3, 5>>(gradient.data()) * B;
+    for (int v = 0; v < 5; ++v)
+      for (int l : row_vectors(v)) force.col(l) += t.weight[g] * B(v, l) * gradient.template segment<3>(3 * v);
     if (K == nullptr) continue;
     // K = ∫ (B ⊗ I₃)ᵀ ∂²W̄/∂u² (B ⊗ I₃) dx block by block, skipping B's zeros (each variable
     // touches 2 to 4 of the n node vectors).

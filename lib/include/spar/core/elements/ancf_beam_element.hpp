@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <span>
 #include <memory>
 #include <string>
 #include <vector>
@@ -186,6 +187,8 @@ private:
   void compute(const ElementInput& in, const ElementRequest& request,
                ElementOutput& out) const override;
   double gerstmayr_force(const Vector& e, Vector& Q, Matrix* K) const;
+  /// The node vectors that row v of Tables::coefficients touches.
+  static std::span<const int> row_vectors(int v);
   double invariant_force(const Vector& e, Vector& Q, Matrix* K) const;
 
   std::vector<int> blocks_;
