@@ -380,7 +380,9 @@ double AncfBeamElement<transverse>::invariant_force(const Vector& e, Vector& Q, 
   // Γ_ab = e_a · e_b; K₂(e) = κ₂ ⊗ I₃ with κ₂_ab = Σ_cd τ_abcd Γ_cd (001 eq. 32, eq. A19),
   // summed over the symmetric pairs a ≤ b, c ≤ d (Tables::invariant_quartic_pairs).
   constexpr int pairs = Tables::pairs;
-  const Eigen::Matrix<double, n, n> gram = nodes.transpose() * nodes;
+  // lazyProduct: coefficient-based, as for all the small products here; for n = 10 Eigen's
+  // default would dispatch to its blocked GEMM, whose packing costs more than the product.
+  const Eigen::Matrix<double, n, n> gram = nodes.transpose().lazyProduct(nodes);
   Eigen::Matrix<double, pairs, 1> gram_pairs, k2_pairs;
   for (int k = 0; k < pairs; ++k) gram_pairs(k) = gram(Tables::pair_first[k], Tables::pair_second[k]);
   k2_pairs.noalias() = t.invariant_quartic_pairs * gram_pairs;
@@ -389,15 +391,16 @@ double AncfBeamElement<transverse>::invariant_force(const Vector& e, Vector& Q, 
     k2(Tables::pair_first[k], Tables::pair_second[k]) = k2(Tables::pair_second[k], Tables::pair_first[k]) = k2_pairs(k);
   const Eigen::Matrix<double, n, n> k = t.invariant_linear + k2;
   // Q = (K₁ + K₂(e)) e (001 eq. 36 with eq. 23).
-  Eigen::Map<Eigen::Matrix<double, 3, n>>(Q.data()).noalias() = nodes * k;
+  Eigen::Map<Eigen::Matrix<double, 3, n>>(Q.data()).noalias() = nodes.lazyProduct(k);
   if (K != nullptr) {
     // J = K₁ + K₂(e) + 2 D(e), D_(a)(m) = Σ_bc τ_abcm e_b e_cᵀ (001 eq. 37, eq. A20).
     for (int a = 0; a < n; ++a)
       for (int m = 0; m < n; ++m) {
         Eigen::Matrix<double, n, n> tam;  // tam(b, c) = τ_abcm
         for (int c = 0; c < n; ++c) tam.col(c) = t.invariant_quartic.col(c + n * m).template segment<n>(n * a);
+        const Eigen::Matrix<double, 3, n> nodes_tam = nodes.lazyProduct(tam);
         K->template block<3, 3>(3 * a, 3 * m) =
-            k(a, m) * Matrix3::Identity() + 2 * nodes * tam * nodes.transpose();
+            k(a, m) * Matrix3::Identity() + 2 * nodes_tam.lazyProduct(nodes.transpose());
       }
   }
   // U = U₀ + ½ Σ κ₁_ab Γ_ab + ¼ Σ κ₂_ab Γ_ab.
