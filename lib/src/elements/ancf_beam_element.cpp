@@ -232,7 +232,7 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
   // (eq. A13). F₁ = b e₀ᵀ and F₂ = c e₀ᵀ have one column, which leaves Ê₀₀ = ½(F₀ᵀF₀ − I),
   // Ê₀ⱼ = ¼(w e₀ᵀ + e₀ wᵀ) with w = F₀ᵀ x_j, and Ê_ij = ½ (x_i · x_j) e₀e₀ᵀ for i, j ≥ 1 (x₁ = b,
   // x₂ = c).
-  Matrix3 E[3][3], S[3][3], Sbar[3][3];
+  Matrix3 E[3][3], Sbar[3][3];
   E[0][0].noalias() = 0.5 * F[0].transpose() * F[0];
   E[0][0].diagonal().array() -= 0.5;
   for (int j = 1; j < 3; ++j) {
@@ -246,18 +246,18 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
     }
   }
   for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) {
-      E[j][i] = E[i][j];
-      S[i][j] = S[j][i] = lambda * E[i][j].trace() * Matrix3::Identity() + 2 * mu * E[i][j];
-    }
-  // S̄_pq = ∫ φ_p φ_q S dA = Σ_ij M_pqij Ŝ_ij.
+    for (int j = i + 1; j < 3; ++j) E[j][i] = E[i][j];
+  // S̄_pq = ∫ φ_p φ_q S dA = Σ_ij M_pqij Ŝ_ij = λ tr(Ē_pq) I + 2μ Ē_pq with Ē_pq = Σ_ij M_pqij Ê_ij
+  // (Ŝ is linear in Ê), summed over i ≤ j (M and Ê are symmetric in i, j) and, for i, j ≥ 1, on
+  // the one non-zero entry (0, 0) of Ê_ij.
   double W = 0.0;
   for (int p = 0; p < 3; ++p)
     for (int q = p; q < 3; ++q) {
-      Matrix3 s = Matrix3::Zero();
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          if (M[p][q][i][j] != 0.0) s += M[p][q][i][j] * S[i][j];  // odd moments of symmetric sections vanish
+      const double(&m)[3][3] = M[p][q];
+      Matrix3 e = m[0][0] * E[0][0] + 2 * m[0][1] * E[0][1] + 2 * m[0][2] * E[0][2];
+      e(0, 0) += m[1][1] * E[1][1](0, 0) + 2 * m[1][2] * E[1][2](0, 0) + m[2][2] * E[2][2](0, 0);
+      Matrix3 s = 2 * mu * e;
+      s.diagonal().array() += lambda * e.trace();
       Sbar[p][q] = Sbar[q][p] = s;
       W += (p == q ? 0.5 : 1.0) * E[p][q].cwiseProduct(s).sum();  // W̄ = ½ Σ_pq Ê_pq : S̄_pq
     }
