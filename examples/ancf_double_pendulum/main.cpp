@@ -92,7 +92,7 @@ int main(int argc, char** argv) try {
   // terms) is then what stops most steps. Modified Newton keeps a factorization while the
   // increments shrink by at least 50× per iteration (--refactor-contraction 0.02; the library's
   // default 0.5 kept one for ~350 steps at a contraction of ~0.2–0.3 and took 7.9 iterations a
-  // step): a refactorization costs a few residual-only iterations (README, "Run time").
+  // step): a refactorization costs about six iterations (README, "Newton tolerances").
   solvers::GeneralizedAlpha integrator(model, std::move(joints),
                                        {.time_step = h, .spectral_radius = rho_infinity,
                                         .iteration_matrix = solvers::iteration_matrix_from_string(strategy), .tolerance = tolerance,
