@@ -27,8 +27,8 @@
 #include <Eigen/Core>
 
 #include <array>
-#include <span>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
