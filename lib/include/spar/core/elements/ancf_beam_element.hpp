@@ -28,6 +28,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,24 @@ struct AncfElementTables {
   double invariant_constant = 0.0;
   Eigen::Matrix<double, n, n> invariant_linear;
   Eigen::MatrixXd invariant_quartic;
+  /// τ on the symmetric pairs: Γ and κ₂ are symmetric and τ_abcd = τ_bacd = τ_abdc, so
+  /// κ₂_ab = Σ_{c≤d} (2 − δ_cd) τ_abcd Γ_cd for a ≤ b; row and column k are the pair
+  /// (pair_first[k], pair_second[k]), the column's factor 2 − δ_cd included. The force's product
+  /// then costs (n(n+1)/2)² multiply-adds instead of n⁴ (1296 instead of 4096 for 24 coordinates).
+  static constexpr int pairs = n * (n + 1) / 2;
+  static constexpr std::array<int, pairs> pair_first = [] {
+    std::array<int, pairs> first{};
+    for (int a = 0, k = 0; a < n; ++a)
+      for (int b = a; b < n; ++b) first[k++] = a;
+    return first;
+  }();
+  static constexpr std::array<int, pairs> pair_second = [] {
+    std::array<int, pairs> second{};
+    for (int a = 0, k = 0; a < n; ++a)
+      for (int b = a; b < n; ++b) second[k++] = b;
+    return second;
+  }();
+  Eigen::MatrixXd invariant_quartic_pairs;
 
 private:
   void compute_invariants();
@@ -168,6 +187,8 @@ private:
   void compute(const ElementInput& in, const ElementRequest& request,
                ElementOutput& out) const override;
   double gerstmayr_force(const Vector& e, Vector& Q, Matrix* K) const;
+  /// The node vectors that row v of Tables::coefficients touches.
+  static std::span<const int> row_vectors(int v);
   double invariant_force(const Vector& e, Vector& Q, Matrix* K) const;
 
   std::vector<int> blocks_;
