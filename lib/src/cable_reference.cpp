@@ -36,11 +36,9 @@ CableReference::CableReference(const std::vector<iga::RationalBezier<2>>& pieces
                   "give pieces of degree 1, 2 or 3 (a RANCF element is a rational cubic)");
     iga::RationalBezier<2> cubic = pieces[k];
     while (cubic.degree() < 3) cubic = iga::elevate(cubic);
-    const double L = breakpoints_[k + 1] - breakpoints_[k];
-    const auto& P = cubic.points;
-    const auto& w = cubic.weights;
-    a(k) = std::log(3 * w(1) / (w(0) * L) * (P.col(1) - P.col(0)).norm());
-    b(k) = std::log(3 * w(2) / (w(3) * L) * (P.col(3) - P.col(2)).norm());
+    const Eigen::Matrix<double, 8, 1> e = iga::rancf_from_bezier(cubic, breakpoints_[k + 1] - breakpoints_[k]).e;
+    a(k) = std::log(e.segment<2>(2).norm());
+    b(k) = std::log(e.segment<2>(6).norm());
     cubics.push_back(cubic);
   }
   // One slope per node: piece k reparameterized by ρ_k has the end speeds ρ_k e^{a_k} and
