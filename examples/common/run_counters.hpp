@@ -12,6 +12,7 @@ inline void write_run_counters(core::ResultsWriter& results, const solvers::Gene
   results.write_attribute("steps", counters.steps);
   results.write_attribute("newton_iterations", counters.newton_iterations);
   results.write_attribute("factorizations", counters.factorizations);
+  results.write_attribute("substructured_factorizations", counters.substructured_factorizations);
   results.write_attribute("jtheta_updates", counters.jtheta_evaluations);
   results.write_attribute("cutbacks", counters.cutbacks);
 }

@@ -60,6 +60,7 @@ int main(int argc, char** argv) try {
                                     std::max(1, examples::element_limit(examples::bytes_per_element) / 28));
   const std::string strategy = cli.text("--strategy", "update", "iteration matrix", {"update", "frozen", "modified"});
   const std::string linear_solver = cli.text("--linear-solver", "klu", "sparse direct solver", {"klu", "umfpack", "eigen-lu"});
+  const bool substructuring = cli.text("--substructuring", "on", "KLU by members where cheaper (docs/dynamics.md D12)", {"on", "off"}) == "on";
   const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
   //    The increment test (a squared norm) at 1e-8 ends most steps after one iteration; the
   //    residual (1e-8 of its terms) and constraint (1e-10 m) tests hold the accuracy: 1e-12 needs
@@ -91,7 +92,7 @@ int main(int argc, char** argv) try {
       {.time_step = h, .spectral_radius = rho_infinity,
        .iteration_matrix = solvers::iteration_matrix_from_string(strategy), .tolerance = tolerance,
        .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8,
-       .linear_solver = solvers::linear_solver_kind_from_string(linear_solver)});
+       .linear_solver = solvers::linear_solver_kind_from_string(linear_solver), .substructuring = substructuring});
   integrator.initialize();
   const core::Configuration& q = model.state();
   const auto zeta = [&](const examples::TrussSlider& s) { return s.joint->zeta(q); };
@@ -242,6 +243,7 @@ int main(int argc, char** argv) try {
       .add("steps", static_cast<int>(counters.steps))
       .add("newton_iterations", static_cast<int>(counters.newton_iterations))
       .add("factorizations", static_cast<int>(counters.factorizations))
+      .add("substructured_factorizations", static_cast<int>(counters.substructured_factorizations))
       .add("cutbacks", static_cast<int>(counters.cutbacks))
       .add("wall_s", counters.wall_seconds)
       .print();

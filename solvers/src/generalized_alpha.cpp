@@ -113,7 +113,7 @@ struct GeneralizedAlpha::Implementation {
         assembly(m, pointers(constraints), o.assembly),
         solver(make_linear_solver(o.linear_solver)),
         structure_version(m.structure_version()) {
-    solver->analyze(assembly.pattern().matrix());
+    analyze();
     const int n = assembly.dof_count();
     velocity = acceleration = algorithmic_acceleration = increment = Eigen::VectorXd::Zero(n);
     lambda = Eigen::VectorXd::Zero(assembly.multiplier_count());
@@ -245,6 +245,7 @@ struct GeneralizedAlpha::Implementation {
                   "a massless body's rotation, a coordinate that no constraint involves)");
     }
     ++counters.factorizations;
+    if (solver->substructured()) ++counters.substructured_factorizations;
     have_factorization = true;
   }
 
@@ -638,6 +639,12 @@ struct GeneralizedAlpha::Implementation {
     }
   }
 
+  /// The linear solver's analysis of the current pattern (with the model's substructures).
+  void analyze() {
+    if (options.substructuring) solver->set_substructures(assembly.substructures());
+    solver->analyze(assembly.pattern().matrix());
+  }
+
   /// Newton iterations of one step from the predictor; true when converged.
   bool newton(double h, double t_next, double beta_prime, double gamma_prime,
               const MatrixCoefficients& coefficients, int n) {
@@ -872,7 +879,7 @@ struct GeneralizedAlpha::Implementation {
     }
     const Eigen::VectorXd old_lambda = lambda;
     assembly.rebuild();
-    solver->analyze(assembly.pattern().matrix());
+    analyze();
     ++counters.pattern_builds;
     structure_version = model.structure_version();
     have_factorization = false;

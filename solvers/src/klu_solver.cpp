@@ -6,12 +6,21 @@
 // the pattern of A + Aᵀ) and COLAMD (on AᵀA) are both analyzed and factorized, and the one whose
 // factorization took fewer flops is kept. Neither wins everywhere on the saddle-point matrices of
 // constrained dynamics: the zero diagonal of the multipliers forces off-diagonal pivots that AMD
-// cannot foresee. On the truss unit (1 216 unknowns) COLAMD needs 27 % fewer instructions per
-// step; on the slider-crank AMD is 2.6 % cheaper (callgrind, docs/performance.md).
+// cannot foresee. On the slider-crank AMD is 2.6 % cheaper than COLAMD (callgrind,
+// docs/performance.md). With substructures given (LinearSolver::set_substructures), a third
+// candidate is the substructured factorization of substructuring.hpp, kept when it needs less
+// than half the flops of the better whole-matrix ordering (its solves refine against A, one or two
+// extra back-substitutions): on the truss unit, 13 times fewer (docs/dynamics.md D12). When the
+// substructured matrix is singular or the refinement does not reach round-off, the backend falls
+// back to the whole matrix for the rest of the pattern.
 #include "linear_solver_backends.hpp"
+#include "substructuring.hpp"
+
+#include <spar/error.hpp>
 
 #include <klu.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -24,6 +33,8 @@ class KluSolver final : public LinearSolver {
 public:
   KluSolver() : LinearSolver(LinearSolverKind::klu) { klu_defaults(&common_); }
 
+  bool substructured() const noexcept override { return mode_ == Mode::substructured; }
+
 private:
   struct SymbolicDeleter {
     klu_common* common;
@@ -33,95 +44,220 @@ private:
     klu_common* common;
     void operator()(klu_numeric* numeric) const { klu_free_numeric(&numeric, common); }
   };
+  using Symbolic = std::unique_ptr<klu_symbolic, SymbolicDeleter>;
+  using Numeric = std::unique_ptr<klu_numeric, NumericDeleter>;
+
+  /// A compressed-column matrix as KLU takes it.
+  struct Columns {
+    int* starts;
+    int* rows;
+    double* values;
+  };
+
+  /// One way of factorizing the pattern: its symbolic analysis, its last numeric factorization and
+  /// the pivot ratio (klu_rcond = min |U_kk| / max |U_kk|) of its last pivoting factorization.
+  struct Factorization {
+    Factorization(klu_common* common, double tolerance)
+        : symbolic(nullptr, {common}), numeric(nullptr, {common}), pivot_tolerance(tolerance) {}
+    Symbolic symbolic;
+    Numeric numeric;
+    double pivoting_rcond = 0.0;
+    /// KLU's partial pivoting keeps the diagonal while |a_kk| ≥ this · the column's largest entry.
+    double pivot_tolerance;
+  };
+
+  /// undecided: the pattern's first factorization chooses; exact: A with the better of AMD and
+  /// COLAMD; substructured: P (substructuring.hpp) and refinement against A.
+  enum class Mode { undecided, exact, substructured };
 
   void analyze_pattern(const SparseMatrix& A) override {
-    numeric_.reset();
+    const int n = static_cast<int>(A.rows());
+    mode_ = Mode::undecided;
+    exact_.numeric.reset();
+    exact_.symbolic.reset();
+    substructured_.numeric.reset();
+    substructured_.symbolic.reset();
     for (int ordering : {amd, colamd}) {
+      candidates_[ordering].numeric.reset();
       common_.ordering = ordering;
-      candidates_[ordering].reset(
-          klu_analyze(static_cast<int>(A.rows()), column_starts(A), row_indices(A), &common_));
-      if (!candidates_[ordering]) throw_library_failure("klu_analyze", common_.status);
+      candidates_[ordering].symbolic.reset(
+          klu_analyze(n, column_starts(A), row_indices(A), &common_));
+      if (!candidates_[ordering].symbolic) throw_library_failure("klu_analyze", common_.status);
     }
-    symbolic_.reset();
-  }
-
-  /// The first factorization of a pattern, with each candidate ordering: keeps the cheaper
-  /// ordering and its factorization. When neither factorizes (a singular matrix) numeric_ stays
-  /// empty, common_.status says why, and both candidates wait for the pattern's next matrix.
-  void factorize_choosing_ordering(const SparseMatrix& A) {
-    double best_flops = INFINITY;
-    int status = KLU_OK;
-    for (int ordering : {amd, colamd}) {
-      std::unique_ptr<klu_numeric, NumericDeleter> numeric(
-          klu_factor(column_starts(A), row_indices(A), values(A), candidates_[ordering].get(), &common_),
-          NumericDeleter{&common_});
-      status = common_.status;
-      if (!numeric || !klu_flops(candidates_[ordering].get(), numeric.get(), &common_)) continue;
-      if (common_.flops < best_flops) {
-        best_flops = common_.flops;
-        symbolic_ = std::move(candidates_[ordering]);
-        numeric_ = std::move(numeric);
-      }
-    }
-    if (!numeric_) {
-      common_.status = status;
-      return;
-    }
-    for (auto& candidate : candidates_) candidate.reset();
-    common_.status = KLU_OK;
+    if (substructures().empty()) return;
+    pattern_ = substructured_pattern(A, substructures());
+    // The given ordering as it is: no block triangular form (P is irreducible but for the fixed
+    // dofs) and the same permutation for rows and columns, so that the diagonal stays preferred.
+    common_.btf = 0;
+    substructured_.symbolic.reset(klu_analyze_given(n, pattern_.column_starts.data(),
+                                                    pattern_.row_indices.data(), pattern_.ordering.data(),
+                                                    pattern_.ordering.data(), &common_));
+    common_.btf = 1;
+    if (!substructured_.symbolic) throw_library_failure("klu_analyze_given", common_.status);
+    system_ = A;
+    preconditioner_values_.resize(pattern_.source.size());
   }
 
   FactorizationOutcome factorize_values(const SparseMatrix& A) override {
-    if (numeric_) {
-      // Refactorization keeps the first factorization's pivot order. If a pivot has become zero
-      // or has shrunk by more than refactor_rcond_drop relative to the last pivoting
-      // factorization (klu_rcond = min |U_kk| / max |U_kk|), that order is no longer stable and
-      // the matrix is factorized again with pivoting.
-      const bool refactored =
-          klu_refactor(column_starts(A), row_indices(A), values(A), symbolic_.get(),
-                       numeric_.get(), &common_) != 0;
-      if (!refactored && common_.status != KLU_SINGULAR)
-        throw_library_failure("klu_refactor", common_.status);
-      if (refactored && klu_rcond(symbolic_.get(), numeric_.get(), &common_) &&
-          common_.rcond >= refactor_rcond_drop * pivoting_rcond_)
+    if (substructured_.symbolic && mode_ != Mode::exact) {
+      std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), system_.valuePtr());
+      for (std::size_t k = 0; k < pattern_.source.size(); ++k)
+        preconditioner_values_[k] = system_.valuePtr()[pattern_.source[k]];
+      row_scales(system_, row_scale_);
+    }
+    if (mode_ == Mode::undecided) return factorize_choosing_method(A);
+    if (mode_ == Mode::substructured) {
+      if (factorize_with(preconditioner(), substructured_) == FactorizationOutcome::succeeded)
         return FactorizationOutcome::succeeded;
-      numeric_.reset();
+      mode_ = Mode::exact;  // P is singular (a member without mass or support): A as a whole
     }
-    if (symbolic_)
-      numeric_.reset(klu_factor(column_starts(A), row_indices(A), values(A), symbolic_.get(), &common_));
-    else
-      factorize_choosing_ordering(A);
-    if (common_.status == KLU_SINGULAR) {
-      numeric_.reset();
-      return FactorizationOutcome::singular;
-    }
-    if (!numeric_) throw_library_failure("klu_factor", common_.status);
-    if (!klu_rcond(symbolic_.get(), numeric_.get(), &common_))
-      throw_library_failure("klu_rcond", common_.status);
-    pivoting_rcond_ = common_.rcond;
-    return FactorizationOutcome::succeeded;
+    return factorize_with(whole(A), exact_);
   }
 
   void solve_in_place(Eigen::Ref<Eigen::VectorXd> b) override {
+    if (mode_ != Mode::substructured) {
+      back_substitute(exact_, b);
+      return;
+    }
+    right_hand_side_ = b;
+    back_substitute(substructured_, b);
+    if (pattern_.dropped == 0 || refined(b)) return;
+    // The dropped couplings are too strong for the refinement: A as a whole from now on.
+    mode_ = Mode::exact;
+    if (factorize_with(whole(system_), exact_) == FactorizationOutcome::singular)
+      throw Error("numerically singular iteration matrix — check for a redundant constraint or an "
+                  "unconstrained rigid-body mode",
+                  "solvers::LinearSolver::solve (klu)",
+                  "remove the redundant constraint or add the support that fixes the free motion");
+    b = right_hand_side_;
+    back_substitute(exact_, b);
+  }
+
+  /// The first factorization of a pattern, by each candidate method: keeps the cheapest (the
+  /// substructured one only when it takes less than half the flops of the better ordering of A,
+  /// its refinement costing one or two more solves, or always when so asked). When nothing factorizes (a singular matrix),
+  /// mode_ stays undecided and the candidates wait for the pattern's next matrix.
+  FactorizationOutcome factorize_choosing_method(const SparseMatrix& A) {
+    double best_flops = INFINITY;
+    int status = KLU_OK;
+    for (int ordering : {amd, colamd}) {
+      Factorization& candidate = candidates_[ordering];
+      if (factorize_with(whole(A), candidate) == FactorizationOutcome::singular ||
+          !klu_flops(candidate.symbolic.get(), candidate.numeric.get(), &common_)) {
+        status = common_.status;
+        continue;
+      }
+      if (common_.flops < best_flops) {
+        best_flops = common_.flops;
+        std::swap(exact_, candidate);
+      }
+    }
+    if (substructured_.symbolic &&
+        factorize_with(preconditioner(), substructured_) == FactorizationOutcome::succeeded &&
+        klu_flops(substructured_.symbolic.get(), substructured_.numeric.get(), &common_) &&
+        (substructuring() == Substructuring::always ||
+         common_.flops < (pattern_.dropped > 0 ? substructured_flop_share : 1.0) * best_flops)) {
+      mode_ = Mode::substructured;
+    } else if (exact_.numeric) {
+      mode_ = Mode::exact;
+      substructured_.numeric.reset();
+    } else {
+      common_.status = status;
+      return FactorizationOutcome::singular;
+    }
+    for (Factorization& candidate : candidates_) candidate.numeric.reset();
+    common_.status = KLU_OK;
+    return FactorizationOutcome::succeeded;
+  }
+
+  /// Refactorizes with the kept pivot order; factorizes with pivoting when there is none, a pivot
+  /// has become zero, or the pivot ratio has fallen by more than refactor_rcond_drop against the
+  /// last pivoting factorization (that order is then no longer stable).
+  FactorizationOutcome factorize_with(const Columns& M, Factorization& f) {
+    if (f.numeric) {
+      const bool refactored =
+          klu_refactor(M.starts, M.rows, M.values, f.symbolic.get(), f.numeric.get(), &common_) != 0;
+      if (!refactored && common_.status != KLU_SINGULAR)
+        throw_library_failure("klu_refactor", common_.status);
+      if (refactored && klu_rcond(f.symbolic.get(), f.numeric.get(), &common_) &&
+          common_.rcond >= refactor_rcond_drop * f.pivoting_rcond)
+        return FactorizationOutcome::succeeded;
+      f.numeric.reset();
+    }
+    common_.tol = f.pivot_tolerance;
+    f.numeric.reset(klu_factor(M.starts, M.rows, M.values, f.symbolic.get(), &common_));
+    if (common_.status == KLU_SINGULAR) {
+      f.numeric.reset();
+      return FactorizationOutcome::singular;
+    }
+    if (!f.numeric) throw_library_failure("klu_factor", common_.status);
+    if (!klu_rcond(f.symbolic.get(), f.numeric.get(), &common_))
+      throw_library_failure("klu_rcond", common_.status);
+    f.pivoting_rcond = common_.rcond;
+    return FactorizationOutcome::succeeded;
+  }
+
+  void back_substitute(Factorization& f, Eigen::Ref<Eigen::VectorXd> b) {
     const int n = static_cast<int>(b.size());
-    if (!klu_solve(symbolic_.get(), numeric_.get(), n, 1, b.data(), &common_))
+    if (!klu_solve(f.symbolic.get(), f.numeric.get(), n, 1, b.data(), &common_))
       throw_library_failure("klu_solve", common_.status);
+  }
+
+  /// Iterative refinement of x (P⁻¹ b on entry) against A = system_: x ← x + P⁻¹(b − A x) until
+  /// the backward error is at round-off level or stops halving. True when it ends below
+  /// refined_backward_error.
+  bool refined(Eigen::Ref<Eigen::VectorXd> x) {
+    double previous = INFINITY;
+    for (int sweep = 0;; ++sweep) {
+      const double omega = residual_and_backward_error(system_, row_scale_, x, right_hand_side_, correction_, magnitude_);
+      if (omega <= round_off_backward_error) return true;
+      if (sweep == max_refinement_sweeps || !(omega < 0.5 * previous))
+        return omega <= refined_backward_error;
+      back_substitute(substructured_, correction_);
+      x += correction_;
+      previous = omega;
+    }
+  }
+
+  static Columns whole(const SparseMatrix& A) { return {column_starts(A), row_indices(A), values(A)}; }
+  Columns preconditioner() {
+    return {pattern_.column_starts.data(), pattern_.row_indices.data(), preconditioner_values_.data()};
   }
 
   /// The factor by which the pivot ratio of a refactorization may fall below that of the last
   /// pivoting factorization before KLU pivots again: three orders of magnitude of lost accuracy.
   static constexpr double refactor_rcond_drop = 1e-3;
+  /// KLU's default threshold for A as a whole.
+  static constexpr double whole_pivot_tolerance = 1e-3;
+  /// On P, the interface's diagonal (the dual Schur complement, small against the couplings of a
+  /// sliding joint's ζ) is kept unless a million times smaller than its column: with KLU's 1e-3,
+  /// 88 of the truss unit's 208 interface pivots went off the diagonal and doubled the flops
+  /// (2.1 against 1.3 Mflop). The refinement against A and the pivot-ratio test of every
+  /// refactorization guard the accuracy.
+  static constexpr double substructured_pivot_tolerance = 1e-6;
+  /// The substructured factorization is kept when its flops are below this share of A's.
+  static constexpr double substructured_flop_share = 0.5;
+  /// Refinement stops at a componentwise backward error of a few unit round-offs (what an LU of A
+  /// with partial pivoting gives), after max_refinement_sweeps, or when a sweep no longer halves
+  /// it; ending above refined_backward_error, the substructured solve is not trusted.
+  static constexpr double round_off_backward_error = 4.0 * 2.220446049250313e-16;
+  static constexpr double refined_backward_error = 1e-13;
+  static constexpr int max_refinement_sweeps = 10;
 
   static constexpr int amd = 0, colamd = 1;  // klu_common::ordering
 
   klu_common common_{};
-  double pivoting_rcond_ = 0.0;
+  Mode mode_ = Mode::undecided;
   // Declared after common_, so destroyed (and freed through it) before it.
-  std::unique_ptr<klu_symbolic, SymbolicDeleter> symbolic_{nullptr, SymbolicDeleter{&common_}};
-  std::array<std::unique_ptr<klu_symbolic, SymbolicDeleter>, 2> candidates_{
-      std::unique_ptr<klu_symbolic, SymbolicDeleter>{nullptr, SymbolicDeleter{&common_}},
-      std::unique_ptr<klu_symbolic, SymbolicDeleter>{nullptr, SymbolicDeleter{&common_}}};
-  std::unique_ptr<klu_numeric, NumericDeleter> numeric_{nullptr, NumericDeleter{&common_}};
+  Factorization exact_{&common_, whole_pivot_tolerance};
+  Factorization substructured_{&common_, substructured_pivot_tolerance};
+  std::array<Factorization, 2> candidates_{Factorization{&common_, whole_pivot_tolerance},
+                                           Factorization{&common_, whole_pivot_tolerance}};
+  SubstructuredPattern pattern_;
+  /// A's pattern and the values of its last factorization (the refinement's residual).
+  SparseMatrix system_;
+  std::vector<double> preconditioner_values_;
+  Eigen::VectorXd row_scale_, right_hand_side_, correction_, magnitude_;
 };
 
 }  // namespace

@@ -81,6 +81,10 @@ void LinearSolver::analyze(const SparseMatrix& A) {
   analyzed_ = false;
   factorized_ = false;
   const int n = static_cast<int>(A.rows());
+  if (!substructures_.empty() && static_cast<int>(substructures_.size()) != n)
+    throw Error("substructures were given for " + std::to_string(substructures_.size()) +
+                    " unknowns, the matrix has " + std::to_string(n),
+                where("analyze"), "call set_substructures again for the new system (or with {})");
   if (const int rank = structural_rank(A); rank < n)
     throw Error("structurally singular iteration matrix (structural rank " +
                     std::to_string(rank) + " of " + std::to_string(n) +

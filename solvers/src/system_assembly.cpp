@@ -4,6 +4,8 @@
 #include <spar/core/work_sharing.hpp>
 #include <spar/error.hpp>
 
+#include <algorithm>
+
 namespace spar::solvers::detail {
 
 namespace {
@@ -88,8 +90,29 @@ void SystemAssembly::rebuild() {
     pattern_blocks.push_back(core::PatternBlock::element(std::move(dofs)));
   }
   pattern_ = std::make_unique<core::SparsePattern>(size(), pattern_blocks);
+  find_substructures();
   residual_ = scale_ = Eigen::VectorXd::Zero(size());
   external_force_ = constraint_force_ = Eigen::VectorXd::Zero(dof_count_);
+}
+
+void SystemAssembly::find_substructures() {
+  const core::Configuration& q = model_.state();
+  // Union–find over blocks: the blocks of one element belong together.
+  std::vector<int> root(static_cast<std::size_t>(model_.block_count()), -1);
+  const auto find = [&](int b) {
+    while (root[b] != b) b = root[b] = root[root[b]];
+    return b;
+  };
+  for (int id = 0; id < model_.element_count(); ++id) {
+    const std::vector<int>& blocks = model_.element(id).blocks();
+    for (const int b : blocks)
+      if (root[b] < 0) root[b] = b;
+    for (const int b : blocks) root[find(b)] = find(blocks.front());
+  }
+  substructures_.assign(static_cast<std::size_t>(size()), -1);
+  for (int b = 0; b < model_.block_count(); ++b)
+    if (root[b] >= 0)
+      std::fill_n(substructures_.begin() + q.blocks[b].offset, q.blocks[b].size, find(b));
 }
 
 void SystemAssembly::compute_element(int id, const core::ElementInput& in,

@@ -51,6 +51,10 @@ public:
   int size() const { return dof_count_ + multiplier_count_; }
   /// The first multiplier of constraint ci.
   int first_multiplier(int ci) const { return constraint_work_[ci].first_multiplier; }
+  /// For substructuring (LinearSolver::set_substructures): per unknown, the substructure of its
+  /// block — blocks joined by elements form one (a beam, a rigid body) — or −1 for the
+  /// multipliers and the blocks no element holds (a sliding joint's ζ).
+  const std::vector<int>& substructures() const { return substructures_; }
   core::SparsePattern& pattern() { return *pattern_; }
   const core::SparsePattern& pattern() const { return *pattern_; }
 
@@ -123,6 +127,8 @@ private:
   /// Adds a constraint's Bᵀλ to the dynamic rows of residual_ (with `with_residual`) and to
   /// constraint_force_, and writes its Φ into its multiplier rows.
   void gather_constraint(const ConstraintWork& w, bool with_residual);
+  /// Fills substructures_ from the elements' blocks.
+  void find_substructures();
 
   core::Model& model_;
   std::vector<joints::Constraint*> constraints_;
@@ -133,6 +139,7 @@ private:
   /// The elements with external forces (Element::has_external_force).
   std::vector<int> load_elements_;
   std::unique_ptr<core::SparsePattern> pattern_;
+  std::vector<int> substructures_;
   Eigen::VectorXd residual_, scale_, external_force_, constraint_force_;
 };
 

@@ -65,6 +65,10 @@ struct DynamicOptions {
   int max_cutbacks = 8;                      ///< halvings of a step that does not converge
   double modified_newton_contraction = 0.5;  ///< refactorize when ‖Δ_k‖ > this · ‖Δ_{k−1}‖
   LinearSolverKind linear_solver = LinearSolverKind::klu;
+  /// Tell the linear solver which unknowns belong to which body (LinearSolver::set_substructures):
+  /// KLU then factorizes a structure of several beams by substructuring when that is cheaper, and
+  /// refines its solves to round-off (docs/dynamics.md D12). Off: the whole matrix, as given.
+  bool substructuring = true;
   /// Events inside a step (a slider reaching its end stop) are located: the step is shortened
   /// so that it ends past the event by at most `event_tolerance`, in the unit of the constraint's
   /// event distance (m for a sliding joint), before the event switches the equations
@@ -134,6 +138,7 @@ struct DynamicCounters {
   long newton_iterations = 0;     ///< linear solves
   long jtheta_evaluations = 0;    ///< iterations that evaluated the rotational block J_θ
   long factorizations = 0;        ///< numeric factorizations
+  long substructured_factorizations = 0;  ///< of which by substructuring (DynamicOptions::substructuring)
   long residual_evaluations = 0;
   long cutbacks = 0;
   long rejected_rotations = 0;     ///< Newton iterates refused because a frame turned by ≥ π in a step

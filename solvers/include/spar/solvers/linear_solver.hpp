@@ -17,6 +17,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace spar::solvers {
@@ -36,6 +37,12 @@ LinearSolverKind linear_solver_kind_from_string(std::string_view name);
 
 /// The name of a solver kind, as accepted by linear_solver_kind_from_string.
 std::string_view to_string(LinearSolverKind kind);
+
+/// When a backend that can factorize by substructures (LinearSolver::set_substructures) does.
+enum class Substructuring {
+  when_cheaper,  ///< when its factorization takes clearly fewer flops than the whole matrix's
+  always,        ///< whenever it can (benchmarks, tests); the fallbacks below still apply
+};
 
 /// A sparse direct solver for square systems A x = b, used as
 /// `analyze(A)` once per pattern, then `factorize(A)` and `solve(b)` as often as needed.
@@ -68,6 +75,19 @@ public:
   /// there is no valid factorization or b's size is not n.
   void solve(Eigen::Ref<Eigen::VectorXd> b);
 
+  /// Optional, before analyze: the substructure of every unknown (≥ 0; e.g. the beam it belongs
+  /// to) or −1 for the interface (multipliers, coordinates that no element holds). A backend may
+  /// then factorize by substructuring, refining the solution against A itself (KLU does when it
+  /// pays; docs/dynamics.md D12); the others ignore it. Empty (the default): A as a whole. Kept
+  /// for later analyses; analyze throws spar::Error when its size is not A's.
+  void set_substructures(std::vector<int> substructure,
+                         Substructuring use = Substructuring::when_cheaper) {
+    substructures_ = std::move(substructure);
+    substructuring_ = use;
+  }
+  /// Whether the last factorization was by substructuring (and solve refines).
+  virtual bool substructured() const noexcept { return false; }
+
   /// The number of successful analyze calls.
   std::size_t analyses() const noexcept { return analyses_; }
   /// The number of successful factorize calls.
@@ -80,6 +100,10 @@ protected:
 
   /// What a backend's numeric factorization found.
   enum class FactorizationOutcome { succeeded, singular };
+
+  /// The substructures given by set_substructures (empty or one entry per unknown of A).
+  const std::vector<int>& substructures() const noexcept { return substructures_; }
+  Substructuring substructuring() const noexcept { return substructuring_; }
 
   /// The backend's symbolic analysis of a square, compressed, structurally nonsingular A. It
   /// discards the backend's previous analysis and factorization.
@@ -108,6 +132,8 @@ private:
   void check_square_compressed(const SparseMatrix& A, std::string_view operation) const;
 
   LinearSolverKind kind_;
+  std::vector<int> substructures_;
+  Substructuring substructuring_ = Substructuring::when_cheaper;
   /// The analyzed pattern, to check that factorize gets the same one.
   std::vector<int> analyzed_column_starts_;
   std::vector<int> analyzed_row_indices_;

@@ -1,0 +1,106 @@
+#include "substructuring.hpp"
+
+#include <spar/error.hpp>
+
+#include <camd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace spar::solvers::detail {
+
+namespace {
+
+/// CAMD's constraint sets, eliminated in this order.
+constexpr int inner = 0, boundary = 1, interface = 2;
+
+}  // namespace
+
+SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
+                                           const std::vector<int>& substructure) {
+  const int n = static_cast<int>(A.cols());
+  if (static_cast<int>(substructure.size()) != n)
+    throw Error("substructures given for " + std::to_string(substructure.size()) +
+                    " unknowns, the matrix has " + std::to_string(n),
+                "solvers::substructured_pattern", "give one substructure (or −1) per unknown");
+  const auto couples_two_substructures = [&](int row, int column) {
+    return substructure[row] >= 0 && substructure[column] >= 0 &&
+           substructure[row] != substructure[column];
+  };
+  SubstructuredPattern p;
+  p.column_starts.reserve(static_cast<std::size_t>(n) + 1);
+  p.row_indices.reserve(static_cast<std::size_t>(A.nonZeros()));
+  p.source.reserve(static_cast<std::size_t>(A.nonZeros()));
+  p.column_starts.push_back(0);
+  for (int column = 0; column < n; ++column) {
+    for (int k = A.outerIndexPtr()[column]; k < A.outerIndexPtr()[column + 1]; ++k) {
+      const int row = A.innerIndexPtr()[k];
+      if (couples_two_substructures(row, column)) {
+        ++p.dropped;
+        continue;
+      }
+      p.row_indices.push_back(row);
+      p.source.push_back(k);
+    }
+    p.column_starts.push_back(static_cast<int>(p.row_indices.size()));
+  }
+
+  // CAMD orders constraint set 0 before set 1 before set 2: a substructure's inner unknowns first
+  // (static condensation onto its boundary: fill inside its band only), then its boundary — the
+  // unknowns coupled to the interface — and the interface last, which then holds the dual Schur
+  // complement and is ordered for its own fill. With the boundary among the inner unknowns, each
+  // interface row would fill across its whole substructure.
+  std::vector<int> constraint_set(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) constraint_set[i] = substructure[i] < 0 ? interface : inner;
+  for (int column = 0; column < n; ++column)
+    for (int k = p.column_starts[column]; k < p.column_starts[column + 1]; ++k) {
+      const int row = p.row_indices[k];
+      if (substructure[row] < 0 && substructure[column] >= 0) constraint_set[column] = boundary;
+      if (substructure[column] < 0 && substructure[row] >= 0) constraint_set[row] = boundary;
+    }
+  std::array<double, CAMD_CONTROL> control{};
+  std::array<double, CAMD_INFO> info{};
+  camd_defaults(control.data());
+  p.ordering.resize(static_cast<std::size_t>(n));
+  const int status = camd_order(n, p.column_starts.data(), p.row_indices.data(), p.ordering.data(),
+                                control.data(), info.data(), constraint_set.data());
+  if (status != CAMD_OK && status != CAMD_OK_BUT_JUMBLED)
+    throw Error("camd_order failed with status " + std::to_string(status),
+                "solvers::substructured_pattern", "check the available memory");
+  return p;
+}
+
+void row_scales(const core::SparseMatrix& A, Eigen::VectorXd& scale) {
+  scale.setZero(A.rows());
+  for (int k = 0; k < A.nonZeros(); ++k)
+    scale(A.innerIndexPtr()[k]) = std::max(scale(A.innerIndexPtr()[k]), std::abs(A.valuePtr()[k]));
+}
+
+double residual_and_backward_error(const core::SparseMatrix& A, const Eigen::VectorXd& row_scale,
+                                   const Eigen::Ref<const Eigen::VectorXd>& x,
+                                   const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::VectorXd& r,
+                                   Eigen::VectorXd& magnitude) {
+  const int n = static_cast<int>(A.cols());
+  r = b;
+  magnitude = b.cwiseAbs();
+  for (int column = 0; column < n; ++column) {
+    const double xj = x(column);
+    for (int k = A.outerIndexPtr()[column]; k < A.outerIndexPtr()[column + 1]; ++k) {
+      const double term = A.valuePtr()[k] * xj;
+      r(A.innerIndexPtr()[k]) -= term;
+      magnitude(A.innerIndexPtr()[k]) += std::abs(term);
+    }
+  }
+  double residual = 0.0, size = 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (row_scale(i) == 0.0) continue;  // an empty row: structurally singular, refused earlier
+    residual = std::max(residual, std::abs(r(i)) / row_scale(i));
+    size = std::max(size, magnitude(i) / row_scale(i));
+  }
+  return residual == 0.0 ? 0.0 : residual / size;
+}
+
+}  // namespace spar::solvers::detail
