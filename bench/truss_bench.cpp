@@ -15,37 +15,40 @@ using namespace spar;
 constexpr solvers::IterationMatrix strategies[] = {
     solvers::IterationMatrix::update, solvers::IterationMatrix::frozen, solvers::IterationMatrix::modified};
 
-/// The example's integrator settings.
-solvers::DynamicOptions truss_options(solvers::IterationMatrix strategy) {
+/// The example's integrator settings; `substructuring` off factorizes the whole matrix (D12).
+solvers::DynamicOptions truss_options(solvers::IterationMatrix strategy, bool substructuring) {
   return {.time_step = 0.005, .spectral_radius = 0.9, .iteration_matrix = strategy, .tolerance = 1e-8,
-          .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8};
+          .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8, .substructuring = substructuring};
 }
 
 struct Deployment {
   examples::TrussUnit unit;
   std::unique_ptr<solvers::GeneralizedAlpha> integrator;
-  explicit Deployment(solvers::IterationMatrix strategy) {
+  explicit Deployment(solvers::IterationMatrix strategy, bool substructuring = true) {
     examples::TrussParameters p;
     p.elements = 4;
     unit = examples::build_truss_unit(p);
     examples::add_deployment_drivers(unit, "cosine", 20.0);
-    integrator = std::make_unique<solvers::GeneralizedAlpha>(unit.model, std::move(unit.joints), truss_options(strategy));
+    integrator = std::make_unique<solvers::GeneralizedAlpha>(unit.model, std::move(unit.joints),
+                                                           truss_options(strategy, substructuring));
     integrator->initialize();
   }
 };
 
-/// Steps 0 … 1 s of the deployment, from the model's construction on.
+/// Steps 0 … 1 s of the deployment, from the model's construction on; the second argument 0
+/// factorizes the whole matrix, 1 by substructures (the default).
 void truss_deployment_first_second(benchmark::State& state) {
   const solvers::IterationMatrix strategy = strategies[state.range(0)];
+  const bool substructuring = state.range(1) != 0;
   for (auto _ : state) {
-    Deployment run(strategy);
+    Deployment run(strategy, substructuring);
     while (run.integrator->time() < 1.0 - 0.0025) run.integrator->step();
     state.counters["newton_iterations"] = static_cast<double>(run.integrator->counters().newton_iterations);
     state.counters["factorizations"] = static_cast<double>(run.integrator->counters().factorizations);
   }
-  state.SetLabel(std::string(solvers::to_string(strategy)));
+  state.SetLabel(std::string(solvers::to_string(strategy)) + (substructuring ? ", substructured" : ", whole matrix"));
 }
-BENCHMARK(truss_deployment_first_second)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(truss_deployment_first_second)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 /// One step from t = 2 s on (β ≈ 7°, the cosine law accelerating).
 void truss_deployment_step(benchmark::State& state) {
