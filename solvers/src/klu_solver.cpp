@@ -10,9 +10,9 @@
 // docs/performance.md). With substructures given (LinearSolver::set_substructures), a third
 // candidate is the substructured factorization of substructuring.hpp, kept when it needs less
 // than half the flops of the better whole-matrix ordering (its solves refine against A, one or two
-// extra back-substitutions): on the truss unit, 13 times fewer (docs/dynamics.md D12). When the
-// substructured matrix is singular or the refinement does not reach round-off, the backend falls
-// back to the whole matrix for the rest of the pattern.
+// extra back-substitutions): on the truss unit, 3.5 times fewer (docs/dynamics.md D12). When the
+// substructured matrix is singular or the refinement does not reach round-off, that matrix is
+// factorized as a whole; after three such failures in a row, the rest of the pattern too.
 #include "linear_solver_backends.hpp"
 #include "substructuring.hpp"
 
@@ -33,7 +33,7 @@ class KluSolver final : public LinearSolver {
 public:
   KluSolver() : LinearSolver(LinearSolverKind::klu) { klu_defaults(&common_); }
 
-  bool substructured() const noexcept override { return mode_ == Mode::substructured; }
+  bool substructured() const noexcept override { return mode_ == Mode::substructured && !whole_now_; }
 
 private:
   struct SymbolicDeleter {
@@ -77,6 +77,8 @@ private:
   void analyze_pattern(const SparseMatrix& A) override {
     const int n = static_cast<int>(A.rows());
     mode_ = Mode::undecided;
+    whole_now_ = false;
+    failures_ = 0;
     exact_.numeric.reset();
     exact_.symbolic.reset();
     substructured_.numeric.reset();
@@ -111,23 +113,28 @@ private:
     }
     if (mode_ == Mode::undecided) return factorize_choosing_method(A);
     if (mode_ == Mode::substructured) {
+      whole_now_ = false;
       if (factorize_with(preconditioner(), substructured_) == FactorizationOutcome::succeeded)
         return FactorizationOutcome::succeeded;
-      mode_ = Mode::exact;  // P is singular (a member without mass or support): A as a whole
+      note_failure();  // P is singular (a body held only through a dropped coupling)
     }
     return factorize_with(whole(A), exact_);
   }
 
   void solve_in_place(Eigen::Ref<Eigen::VectorXd> b) override {
-    if (mode_ != Mode::substructured) {
+    if (mode_ != Mode::substructured || whole_now_) {
       back_substitute(exact_, b);
       return;
     }
     right_hand_side_ = b;
     back_substitute(substructured_, b);
-    if (pattern_.dropped == 0 || refined(b)) return;
-    // The dropped couplings are too strong for the refinement: A as a whole from now on.
-    mode_ = Mode::exact;
+    if (pattern_.dropped == 0 || refined(b)) {
+      failures_ = 0;
+      return;
+    }
+    // The dropped couplings are too strong for the refinement (seen at a diverging Newton iterate
+    // of the linear law, which the step's cut-back then left): A as a whole for this matrix.
+    note_failure();
     if (factorize_with(whole(system_), exact_) == FactorizationOutcome::singular)
       throw Error("numerically singular iteration matrix — check for a redundant constraint or an "
                   "unconstrained rigid-body mode",
@@ -135,6 +142,13 @@ private:
                   "remove the redundant constraint or add the support that fixes the free motion");
     b = right_hand_side_;
     back_substitute(exact_, b);
+  }
+
+  /// The current matrix goes as a whole; after max_substructured_failures failures in a row, every
+  /// later one of the pattern too.
+  void note_failure() {
+    whole_now_ = true;
+    if (++failures_ >= max_substructured_failures) mode_ = Mode::exact;
   }
 
   /// The first factorization of a pattern, by each candidate method: keeps the cheapest (the
@@ -255,11 +269,19 @@ private:
   static constexpr double round_off_backward_error = 4.0 * 2.220446049250313e-16;
   static constexpr double refined_backward_error = 1e-13;
   static constexpr int max_refinement_sweeps = 10;
+  /// Substructuring is given up for the pattern after this many failures in a row (P singular or
+  /// the refinement not reaching refined_backward_error), each of which cost a factorization of P,
+  /// the sweeps and a factorization of A.
+  static constexpr int max_substructured_failures = 3;
 
   static constexpr int amd = 0, colamd = 1;  // klu_common::ordering
 
   klu_common common_{};
   Mode mode_ = Mode::undecided;
+  /// The current matrix was factorized as a whole after a failure of substructuring.
+  bool whole_now_ = false;
+  /// Failures of substructuring in a row.
+  int failures_ = 0;
   // Declared after common_, so destroyed (and freed through it) before it.
   Factorization exact_{&common_, whole_pivot_tolerance, whole_row_scaling};
   Factorization substructured_{&common_, substructured_pivot_tolerance, substructured_row_scaling};

@@ -159,11 +159,17 @@ TEST_CASE("substructuring: couplings too strong to refine fall back to the whole
   auto solver = solvers::make_linear_solver(LinearSolverKind::klu);
   solver->set_substructures(frame.substructure, solvers::Substructuring::always);
   solver->analyze(frame.A);
-  solver->factorize(frame.A);
-  REQUIRE(solver->substructured());
-  Eigen::VectorXd x = b;
-  solver->solve(x);
-  CHECK_FALSE(solver->substructured());
+  Eigen::VectorXd x;
+  // Each failure costs the matrix its substructured factorization; P is tried again with the next
+  // matrix (a failure may be one bad Newton iterate), and given up after three in a row.
+  for (int attempt = 1; attempt <= 4; ++attempt) {
+    INFO("factorization " << attempt);
+    solver->factorize(frame.A);
+    CHECK(solver->substructured() == (attempt <= 3));
+    x = b;
+    solver->solve(x);
+    CHECK_FALSE(solver->substructured());
+  }
   auto whole = solvers::make_linear_solver(LinearSolverKind::klu);
   const double whole_residual = relative_residual(frame.A, solve_with(*whole, frame.A, b), b);
   CHECK(relative_residual(frame.A, x, b) <= 2.0 * whole_residual);
