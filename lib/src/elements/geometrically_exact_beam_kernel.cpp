@@ -64,6 +64,24 @@ Matrix6x12 strain_operator(const PointKinematics& k) {
   return B;
 }
 
+/// C B and Bᵀ (C B), the material part of H_z (docs/beam.md eq. B8), from B's nonzero blocks
+/// (eq. B5): B's γ rows have no Θ′ columns and its κ rows no x′ or a columns, so C B takes
+/// 270 products instead of 432 and Bᵀ (C B) 540 instead of 864.
+Matrix6x12 constitutive_times_strain_operator(const Eigen::Matrix<double, 6, 6>& C, const Matrix6x12& B) {
+  Matrix6x12 CB;
+  CB.leftCols<6>().noalias() = C.leftCols<3>().lazyProduct(B.topLeftCorner<3, 6>());
+  CB.middleCols<3>(3 * z_theta).noalias() = C.lazyProduct(B.middleCols<3>(3 * z_theta));
+  CB.rightCols<3>().noalias() = C.rightCols<3>().lazyProduct(B.bottomRightCorner<3, 3>());
+  return CB;
+}
+
+/// H += Bᵀ (C B) from B's nonzero blocks (see constitutive_times_strain_operator).
+void add_material_stiffness(const Matrix6x12& B, const Matrix6x12& CB, Matrix12& H) {
+  H.topRows<6>().noalias() += B.topLeftCorner<3, 6>().transpose().lazyProduct(CB.topRows<3>());
+  H.middleRows<3>(3 * z_theta).noalias() += B.middleCols<3>(3 * z_theta).transpose().lazyProduct(CB);
+  H.bottomRows<3>().noalias() += B.bottomRightCorner<3, 3>().transpose().lazyProduct(CB.bottomRows<3>());
+}
+
 /// Bᵀσ for σ = (n, m), written out from B's blocks (eq. B5) without forming B — the force
 /// alone needs no more:  [R n,  (E n) × v,  Tᵀ (n × w) + (∂(TΘ′)/∂Θ)ᵀ m,  Tᵀ m], with
 /// `curvature_gradient` = (∂(TΘ′)/∂Θ)ᵀ m, the gradient of mᵀ T(Θ) Θ′.
@@ -203,13 +221,12 @@ void evaluate_element(const GeometricallyExactBeam& beam, int e, const Configura
     // C B once, then Bᵀ (C B) as a coefficient-wise product: Eigen would hand a 12 × 6 × 12
     // product to its blocked GEMM, whose packing costs more than the product at this size.
     const Matrix6x12 B = strain_operator(kin);
-    const Matrix6x12 CB = C * B;
+    const Matrix6x12 CB = constitutive_times_strain_operator(C, B);
     if (!rotation_blocks) {
       // Only the x′ rows of H_z reach a translation row or column of K (B9 with the rotation
-      // rows left out): H_z(x′, ·) = w (B_x′ᵀ C B + G(x′, ·)), G(x′, ·) from B6.
-      const Eigen::Matrix<double, 6, 3> B_x = B.leftCols<3>();
+      // rows left out): H_z(x′, ·) = w (B_x′ᵀ C B + G(x′, ·)), G(x′, ·) from B6; B_x′ = [Rᵀ; 0].
       Eigen::Matrix<double, 3, 12> H_x;
-      H_x.noalias() = gp.weight * B_x.transpose().lazyProduct(CB);
+      H_x.noalias() = gp.weight * B.topLeftCorner<3, 3>().transpose().lazyProduct(CB.topRows<3>());
       H_x.middleCols<3>(3 * z_a) -=
           gp.weight * rel.reference * lie::hat(Vector3(kin.exp_tangent.rotation * stress.head<3>()));
       H_x.middleCols<3>(3 * z_theta) -=
@@ -219,7 +236,7 @@ void evaluate_element(const GeometricallyExactBeam& beam, int e, const Configura
     }
 
     Matrix12 H_z = geometric_stiffness(kin, f, rel, stress.head<3>(), stress.tail<3>());
-    H_z.noalias() += B.transpose().lazyProduct(CB);
+    add_material_stiffness(B, CB, H_z);
     H_z *= gp.weight;
     add_translation_rows(gp, k, H_z.middleRows<3>(3 * z_x_prime), H_y);
     add_rotation_rows(gp, k, H_z, H_y);
