@@ -165,11 +165,10 @@ void add_rotation_rows(const BeamGaussPoint& gp, int k, const Matrix12& H_z, Mat
 }
 
 /// Σ_i λ_i ∂²ψ_i/∂b² for ψ(b) = log(exp(ψ) exp(b)) at b = 0 (docs/beam.md eq. B10):
-///   ∂(T⁻ᵀλ)/∂ψ · T⁻¹ − ½ hat(T⁻ᵀ λ).
-Matrix3 relative_rotation_hessian(const Vector3& psi, const Vector3& lambda) {
-  const Matrix3 T_inverse = lie::tangent_inverse(psi);
-  return lie::tangent_inverse_transpose_derivative(psi, lambda) * T_inverse -
-         0.5 * lie::hat(Vector3(T_inverse.transpose() * lambda));
+///   ∂(T⁻ᵀλ)/∂ψ · T⁻¹ − ½ hat(T⁻ᵀ λ),
+/// from T⁻¹ = T⁻¹(ψ) and D = ∂(T⁻ᵀλ)/∂ψ, which the caller has for other terms too.
+Matrix3 relative_rotation_hessian(const Matrix3& T_inverse, const Matrix3& D, const Vector3& lambda) {
+  return D * T_inverse - 0.5 * lie::hat(Vector3(T_inverse.transpose() * lambda));
 }
 
 /// evaluate_beam_element for elements of `Nodes` control points (Eigen::Dynamic: any number up to
@@ -291,11 +290,13 @@ void evaluate_element(const GeometricallyExactBeam& beam, int e, const Configura
   for (int I = 1; I < k; ++I) {
     const Vector3 lambda = g_y.template segment<3>(3 * (k + I));
     const Vector3& psi = rel.psi[I];
-    result.stiffness.block<3, 3>(6 * I + 3, 6 * I + 3) += relative_rotation_hessian(psi, lambda);
-    result.stiffness.block<3, 3>(3, 3) +=
-        relative_rotation_hessian(Vector3(-psi), Vector3(-lambda));
-    const Matrix3 cross =
-        -lie::tangent_inverse_transpose_derivative(psi, lambda) * d_psi_d_own[I].transpose();
+    const Matrix3 D = lie::tangent_inverse_transpose_derivative(psi, lambda);
+    result.stiffness.block<3, 3>(6 * I + 3, 6 * I + 3) += relative_rotation_hessian(d_psi_d_own[I], D, lambda);
+    // The aa term is the bb term at (−ψ, −λ) (B10), where T⁻¹(−ψ) = T⁻ᵀ(ψ).
+    result.stiffness.block<3, 3>(3, 3) += relative_rotation_hessian(
+        d_psi_d_own[I].transpose(), lie::tangent_inverse_transpose_derivative(Vector3(-psi), Vector3(-lambda)),
+        Vector3(-lambda));
+    const Matrix3 cross = -D * d_psi_d_own[I].transpose();
     result.stiffness.block<3, 3>(6 * I + 3, 3) += cross;
     result.stiffness.block<3, 3>(3, 6 * I + 3) += cross.transpose();
   }
