@@ -211,14 +211,16 @@ void evaluate_element(const GeometricallyExactBeam& beam, int e, const Configura
     const Vector12 g_z =
         gp.weight * strain_operator_transpose_times(kin, stress.head<3>(), stress.tail<3>(), curvature_gradient);
     // g_y += Lᵀ g_z for the linear map z ← y of B9: x′ = Σ N_I′ x_I, a, Θ = Σ N_I ψ_I, Θ′ = Σ N_I′ ψ_I.
-    for (int I = 0; I < k; ++I) g_y.template segment<3>(3 * I) += gp.shape_derivative[I] * g_z.segment<3>(3 * z_x_prime);
+    for (int I = 0; I < k; ++I)
+      g_y.template segment<3>(3 * I) += gp.shape_derivative[I] * g_z.segment<3>(3 * z_x_prime);
     g_y.template segment<3>(3 * k) += g_z.segment<3>(3 * z_a);
     for (int I = 1; I < k; ++I)
       g_y.template segment<3>(3 * (k + I)) += gp.shape[I] * g_z.segment<3>(3 * z_theta) +
-                                     gp.shape_derivative[I] * g_z.segment<3>(3 * z_theta_prime);
+                                              gp.shape_derivative[I] * g_z.segment<3>(3 * z_theta_prime);
     if (!with_stiffness) continue;
-    // C B once, then Bᵀ (C B) as a coefficient-wise product: Eigen would hand a 12 × 6 × 12
-    // product to its blocked GEMM, whose packing costs more than the product at this size.
+    // C B once, then Bᵀ (C B), both as coefficient-wise products of B's nonzero blocks: Eigen
+    // would hand a 12 × 6 × 12 product to its blocked GEMM, whose packing costs more than the
+    // product at this size.
     const Matrix6x12 B = strain_operator(kin);
     const Matrix6x12 CB = constitutive_times_strain_operator(C, B);
     if (!rotation_blocks) {
@@ -272,8 +274,10 @@ void evaluate_element(const GeometricallyExactBeam& beam, int e, const Configura
   for (int I = 0; I < k; ++I) {
     HJ.template middleCols<3>(6 * I) = H_y.template middleCols<3>(3 * I);
     if (I == 0) continue;
-    HJ.template middleCols<3>(3).noalias() += H_y.template middleCols<3>(3 * (k + I)).lazyProduct(d_psi_d_first[I]);
-    HJ.template middleCols<3>(6 * I + 3).noalias() = H_y.template middleCols<3>(3 * (k + I)).lazyProduct(d_psi_d_own[I]);
+    HJ.template middleCols<3>(3).noalias() +=
+        H_y.template middleCols<3>(3 * (k + I)).lazyProduct(d_psi_d_first[I]);
+    HJ.template middleCols<3>(6 * I + 3).noalias() =
+        H_y.template middleCols<3>(3 * (k + I)).lazyProduct(d_psi_d_own[I]);
   }
   ElementMatrix& K = result.stiffness;
   K.resize(n, n);
@@ -281,8 +285,10 @@ void evaluate_element(const GeometricallyExactBeam& beam, int e, const Configura
   for (int I = 0; I < k; ++I) {
     K.middleRows<3>(6 * I) = HJ.template middleRows<3>(3 * I);
     if (I == 0) continue;
-    K.middleRows<3>(3).noalias() += d_psi_d_first[I].transpose().lazyProduct(HJ.template middleRows<3>(3 * (k + I)));
-    K.middleRows<3>(6 * I + 3).noalias() = d_psi_d_own[I].transpose().lazyProduct(HJ.template middleRows<3>(3 * (k + I)));
+    K.middleRows<3>(3).noalias() +=
+        d_psi_d_first[I].transpose().lazyProduct(HJ.template middleRows<3>(3 * (k + I)));
+    K.middleRows<3>(6 * I + 3).noalias() =
+        d_psi_d_own[I].transpose().lazyProduct(HJ.template middleRows<3>(3 * (k + I)));
   }
   // Second-order terms of ψ_I(Δφ_0, Δφ_I) contracted with λ = ∂Π/∂ψ_I (B10): rotation–rotation
   // blocks only.
