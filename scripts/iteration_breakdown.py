@@ -39,7 +39,7 @@ def main():
     iterations = int(sys.argv[2])
     label = sys.argv[3] if len(sys.argv) > 3 else sys.argv[1]
     program = total(costs, r"^main$")
-    elements = total(costs, r"^spar::core::\w+Element::evaluate\(")
+    elements = total(costs, r"^spar::core::\w*Element::evaluate\(")
     constraints = total(costs, r"^spar::solvers::detail::SystemAssembly::compute_constraint\(")
     system = (total(costs, r"^spar::solvers::detail::SystemAssembly::evaluate\(")
               + total(costs, r"^spar::solvers::detail::SystemAssembly::evaluate_constraints_and_loads\(")

@@ -268,6 +268,17 @@ void SparsePattern::apply_dirichlet(const std::vector<int>& fixed_dofs,
     throw Error("right-hand side has " + std::to_string(rhs.size()) + " entries, the matrix " +
                     std::to_string(size) + " rows",
                 "core::SparsePattern::apply_dirichlet", "pass the residual of this system");
+  if (fixed_dofs != dirichlet_dofs_) find_dirichlet_positions(fixed_dofs);
+  double* values = matrix_.valuePtr();
+  for (const int k : dirichlet_positions_) values[k] = 0.0;
+  for (const int dof : fixed_dofs) {
+    values[diagonal_positions_[dof]] = 1.0;
+    rhs[dof] = 0.0;
+  }
+}
+
+void SparsePattern::find_dirichlet_positions(const std::vector<int>& fixed_dofs) {
+  const int size = this->size();
   std::vector<char> fixed(size, 0);
   for (int dof : fixed_dofs) {
     if (dof < 0 || dof >= size)
@@ -276,17 +287,13 @@ void SparsePattern::apply_dirichlet(const std::vector<int>& fixed_dofs,
                   "core::SparsePattern::apply_dirichlet", "fix dofs of this system only");
     fixed[dof] = 1;
   }
-  double* values = matrix_.valuePtr();
   const int* outer = matrix_.outerIndexPtr();
   const int* inner = matrix_.innerIndexPtr();
+  dirichlet_positions_.clear();
   for (int c = 0; c < size; ++c)
     for (int k = outer[c]; k < outer[c + 1]; ++k)
-      if (fixed[c] || fixed[inner[k]]) values[k] = 0.0;
-  for (int c = 0; c < size; ++c)
-    if (fixed[c]) {
-      values[diagonal_positions_[c]] = 1.0;
-      rhs[c] = 0.0;
-    }
+      if (fixed[c] || fixed[inner[k]]) dirichlet_positions_.push_back(k);
+  dirichlet_dofs_ = fixed_dofs;
 }
 
 }  // namespace spar::core

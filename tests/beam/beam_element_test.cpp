@@ -90,11 +90,12 @@ double relative(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return (a - b).norm() / std::max(b.norm(), 1e-300);
 }
 
-/// Calls check(beam, e, q, description) for every element of two-element beams of degree 1, 2, 3
-/// in three random large deformations each (seeds first_seed, +1, +2).
+/// Calls check(beam, e, q, description) for every element of two-element beams of degree 1 … 5
+/// in three random large deformations each (seeds first_seed, +1, +2). The kernel has fixed-size
+/// code for 2, 3 and 4 control points (degree 1 … 3) and dynamic-size code beyond: both are run.
 template <class Check>
 void for_each_deformed_element(unsigned first_seed, Check&& check) {
-  for (int degree = 1; degree <= 3; ++degree) {
+  for (int degree = 1; degree <= 5; ++degree) {
     core::Configuration reference;
     const core::GeometricallyExactBeam beam(
         {.centerline = test::straight_centerline(1.3, 2, degree), .stiffness = test::generic_stiffness()},

@@ -161,6 +161,40 @@ TEST_CASE("apply_dirichlet zeroes rows and columns, sets the diagonal to 1 and t
                     Catch::Contains("right-hand side has 3 entries"));
 }
 
+TEST_CASE("apply_dirichlet after a reassembly, with the same and with another list of dofs",
+          "[core][sparse_pattern]") {
+  // The positions of the fixed rows and columns are kept from one call to the next: a new list
+  // must not be served from the old one's.
+  SparsePattern pattern(small_size, small_blocks());
+  const auto assemble = [&pattern] {
+    pattern.set_zero();
+    for (int b = 0; b < pattern.block_count(); ++b)
+      pattern.add_block(b, random_block(pattern.block(b), b + 1));
+  };
+  const auto expected_for = [&pattern](const std::vector<int>& fixed) {
+    Eigen::MatrixXd expected(pattern.matrix());
+    for (int dof : fixed) {
+      expected.row(dof).setZero();
+      expected.col(dof).setZero();
+      expected(dof, dof) = 1.0;
+    }
+    return expected;
+  };
+  Eigen::VectorXd rhs = Eigen::VectorXd::Ones(small_size);
+  for (const std::vector<int>& fixed : {std::vector<int>{2, 6}, std::vector<int>{2, 6}, std::vector<int>{0, 7},
+                                        std::vector<int>{}}) {
+    assemble();
+    const Eigen::MatrixXd expected = expected_for(fixed);
+    pattern.apply_dirichlet(fixed, rhs);
+    CHECK(Eigen::MatrixXd(pattern.matrix()) == expected);
+  }
+  CHECK_THROWS_WITH(pattern.apply_dirichlet({2, -1}, rhs), Catch::Contains("fixed dof -1 outside"));
+  assemble();
+  const Eigen::MatrixXd expected = expected_for({1});
+  pattern.apply_dirichlet({1}, rhs);  // a refused list leaves nothing behind
+  CHECK(Eigen::MatrixXd(pattern.matrix()) == expected);
+}
+
 TEST_CASE("serial and parallel assembly give bitwise identical matrices",
           "[core][sparse_pattern][openmp]") {
   // 250 cubic elements (past parallel_assembly_min_blocks) and 5 constraint blocks.

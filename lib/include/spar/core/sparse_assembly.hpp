@@ -122,7 +122,9 @@ public:
   /// Imposes homogeneous Dirichlet conditions (zero increments) on `fixed_dofs`: zeroes their rows
   /// and columns in the values, puts 1 on their diagonal and 0 in `rhs`. The structure is
   /// unchanged, so the symbolic factorization stays valid. Throws spar::Error if a dof is outside
-  /// [0, n) or `rhs` does not have n entries. Repeated dofs are allowed.
+  /// [0, n) or `rhs` does not have n entries. Repeated dofs are allowed. The value indices of the
+  /// fixed rows and columns are found once per list of fixed dofs and kept: a later call with the
+  /// same list touches only those entries, not the whole matrix.
   void apply_dirichlet(const std::vector<int>& fixed_dofs, Eigen::Ref<Eigen::VectorXd> rhs);
 
 private:
@@ -132,6 +134,7 @@ private:
   void assemble_serial(const BlockCompute& compute);
   void assemble_parallel(const BlockCompute& compute);
   void build_gather();
+  void find_dirichlet_positions(const std::vector<int>& fixed_dofs);
 
   SparseMatrix matrix_;
   std::vector<PatternBlock> blocks_;
@@ -142,6 +145,9 @@ private:
   std::vector<std::size_t> block_offsets_;
   /// The value index of every diagonal entry.
   std::vector<int> diagonal_positions_;
+  /// apply_dirichlet: the fixed dofs last given, and the value indices of their rows and columns.
+  std::vector<int> dirichlet_dofs_;
+  std::vector<int> dirichlet_positions_;
   /// One dense workspace per thread of the team, reused across assemblies.
   std::vector<Eigen::MatrixXd> workspaces_;
   /// Parallel assembly: block b's dense matrix (column-major) at block_values_[value_offsets_[b]].
