@@ -2,6 +2,7 @@
 
 #include <spar/error.hpp>
 
+#include "finite_values.hpp"
 #include "linear_solver_backends.hpp"
 
 #include <btf.h>
@@ -117,7 +118,7 @@ void LinearSolver::factorize(const SparseMatrix& A) {
                 "call analyze(A) again after a change of pattern");
   factorized_ = false;
   // KLU factorizes a NaN matrix and solves to NaN; every backend refuses it here, naming the entry.
-  if (!Eigen::Map<const Eigen::ArrayXd>(A.valuePtr(), A.nonZeros()).allFinite())
+  if (!detail::all_finite(A.valuePtr(), A.nonZeros()))
     for (int column = 0; column < n; ++column)
       for (SparseMatrix::InnerIterator entry(A, column); entry; ++entry)
         if (!std::isfinite(entry.value()))

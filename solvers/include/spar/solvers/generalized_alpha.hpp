@@ -67,7 +67,8 @@ struct DynamicOptions {
   LinearSolverKind linear_solver = LinearSolverKind::klu;
   /// Tell the linear solver which unknowns belong to which body (LinearSolver::set_substructures):
   /// KLU then factorizes a structure of several beams by substructuring when that is cheaper, and
-  /// refines its solves to round-off (docs/dynamics.md D12). Off: the whole matrix, as given.
+  /// refines its solves to round-off (docs/dynamics.md D12). Used with `update` and `frozen` (a
+  /// factorization per iteration), not with `modified` (solves dominate). Off: the whole matrix.
   bool substructuring = true;
   /// Events inside a step (a slider reaching its end stop) are located: the step is shortened
   /// so that it ends past the event by at most `event_tolerance`, in the unit of the constraint's
