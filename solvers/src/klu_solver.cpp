@@ -10,7 +10,7 @@
 // docs/performance.md). With substructures given (LinearSolver::set_substructures), a third
 // candidate is the substructured factorization of substructuring.hpp, kept when it needs less
 // than half the flops of the better whole-matrix ordering (its solves refine against A, one or two
-// extra back-substitutions): on the truss unit, 3.5 times fewer (docs/dynamics.md D12). When the
+// extra back-substitutions): on the truss unit, 4 times fewer (docs/dynamics.md D12). When the
 // substructured matrix is singular or the refinement does not reach round-off, that matrix is
 // factorized as a whole; after three such failures in a row, the rest of the pattern too.
 #include "linear_solver_backends.hpp"
@@ -109,7 +109,7 @@ private:
       std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), system_.valuePtr());
       for (std::size_t k = 0; k < pattern_.source.size(); ++k)
         preconditioner_values_[k] = system_.valuePtr()[pattern_.source[k]];
-      row_scales(system_, row_scale_);
+      row_scale_stale_ = true;
     }
     if (mode_ == Mode::undecided) return factorize_choosing_method(A);
     if (mode_ == Mode::substructured) {
@@ -223,15 +223,17 @@ private:
   }
 
   /// Iterative refinement of x (P⁻¹ b on entry) against A = system_: x ← x + P⁻¹(b − A x) until
-  /// the backward error is at round-off level or stops halving. True when it ends below
-  /// refined_backward_error.
+  /// the backward error is below refined_backward_error (true), or after max_refinement_sweeps, or
+  /// when a sweep no longer halves it (false). The rows' scales are measured in the first pass
+  /// after a factorization.
   bool refined(Eigen::Ref<Eigen::VectorXd> x) {
     double previous = INFINITY;
     for (int sweep = 0;; ++sweep) {
-      const double omega = residual_and_backward_error(system_, row_scale_, x, right_hand_side_, correction_, magnitude_);
-      if (omega <= round_off_backward_error) return true;
-      if (sweep == max_refinement_sweeps || !(omega < 0.5 * previous))
-        return omega <= refined_backward_error;
+      const double omega = residual_and_backward_error(system_, x, right_hand_side_, correction_,
+                                                       magnitude_, row_scale_, row_scale_stale_);
+      row_scale_stale_ = false;
+      if (omega <= refined_backward_error) return true;
+      if (sweep == max_refinement_sweeps || !(omega < 0.5 * previous)) return false;
       back_substitute(substructured_, correction_);
       x += correction_;
       previous = omega;
@@ -251,7 +253,7 @@ private:
   /// On P, the interface's diagonal (the dual Schur complement, small against the couplings of a
   /// sliding joint's ζ) is kept unless a million times smaller than its column: with KLU's 1e-3,
   /// 88 of the truss unit's 208 interface pivots went off the diagonal and doubled the flops
-  /// (2.1 against 1.3 Mflop). The refinement against A and the pivot-ratio test of every
+  /// (2.1 against 1.3 Mflop, frame 0 still in P). The refinement against A and the pivot-ratio test of every
   /// refactorization guard the accuracy.
   static constexpr double substructured_pivot_tolerance = 1e-6;
   /// KLU's default row scaling for A as a whole (each row by its largest entry).
@@ -263,11 +265,12 @@ private:
   static constexpr int substructured_row_scaling = -1;
   /// The substructured factorization is kept when its flops are below this share of A's.
   static constexpr double substructured_flop_share = 0.5;
-  /// Refinement stops at a componentwise backward error of a few unit round-offs (what an LU of A
-  /// with partial pivoting gives), after max_refinement_sweeps, or when a sweep no longer halves
-  /// it; ending above refined_backward_error, the substructured solve is not trusted.
-  static constexpr double round_off_backward_error = 4.0 * 2.220446049250313e-16;
-  static constexpr double refined_backward_error = 1e-13;
+  /// The backward error a refined solve must reach: four unit round-offs, what an LU of A with
+  /// partial pivoting gives at best (KLU's LU of a whole saddle-point matrix may give far less:
+  /// 2e-9 on the lattice frame of tests/solvers). On the truss unit P's solve alone leaves
+  /// 1e-15…4e-14 and one sweep 6e-17 (a back-substitution and a product with A: no measurable
+  /// time against a target of 1e-13 that needs none).
+  static constexpr double refined_backward_error = 4.0 * 2.220446049250313e-16;
   static constexpr int max_refinement_sweeps = 10;
   /// Substructuring is given up for the pattern after this many failures in a row (P singular or
   /// the refinement not reaching refined_backward_error), each of which cost a factorization of P,
@@ -292,6 +295,8 @@ private:
   SparseMatrix system_;
   std::vector<double> preconditioner_values_;
   Eigen::VectorXd row_scale_, right_hand_side_, correction_, magnitude_;
+  /// row_scale_ is that of the last matrix but one (a factorization since).
+  bool row_scale_stale_ = true;
 };
 
 }  // namespace

@@ -17,6 +17,7 @@
 // sweeps, so the Newton iterates are those of an exact factorization.
 
 #include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/linear_solver.hpp>
 
 #include <Eigen/Core>
 
@@ -26,7 +27,8 @@ namespace spar::solvers::detail {
 
 /// P's pattern and the order in which to factorize it.
 struct SubstructuredPattern {
-  /// P's compressed-column pattern: A's entries except those coupling two different substructures.
+  /// P's compressed-column pattern: A's entries except those coupling two different substructures
+  /// and the off-diagonal ones of fixed unknowns.
   std::vector<int> column_starts, row_indices;
   /// P's k-th value is A's value source[k].
   std::vector<int> source;
@@ -39,21 +41,21 @@ struct SubstructuredPattern {
 };
 
 /// The substructured pattern of A for `substructure` (one entry per unknown: the substructure it
-/// belongs to, ≥ 0, or −1 for the interface). Throws spar::Error when the sizes differ.
+/// belongs to, ≥ 0, interface_unknown or fixed_unknown; LinearSolver::set_substructures). Throws
+/// spar::Error when the sizes differ.
 SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
                                            const std::vector<int>& substructure);
-
-/// scale(i) = maxⱼ |aᵢⱼ|, the row scaling D of residual_and_backward_error.
-void row_scales(const core::SparseMatrix& A, Eigen::VectorXd& scale);
 
 /// r = b − A x, and the normwise backward error of x for the system with every row divided by its
 /// largest entry, D = diag(row_scale) (as KLU scales it): ω = ‖D⁻¹r‖∞ / ‖D⁻¹(|A||x| + |b|)‖∞.
 /// An LU of A with partial pivoting gives ω of a few unit round-offs; a componentwise measure is
 /// not what it guarantees (a row whose few terms are all at the round-off of the others' size
-/// would never be met). `magnitude` is scratch.
-double residual_and_backward_error(const core::SparseMatrix& A, const Eigen::VectorXd& row_scale,
+/// would never be met). With `measure_rows`, row_scale(i) = maxⱼ |aᵢⱼ| is measured in the same
+/// pass. `magnitude` is scratch.
+double residual_and_backward_error(const core::SparseMatrix& A,
                                    const Eigen::Ref<const Eigen::VectorXd>& x,
                                    const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::VectorXd& r,
-                                   Eigen::VectorXd& magnitude);
+                                   Eigen::VectorXd& magnitude, Eigen::VectorXd& row_scale,
+                                   bool measure_rows);
 
 }  // namespace spar::solvers::detail

@@ -2,6 +2,7 @@
 
 #include <spar/core/converged_chart.hpp>
 #include <spar/core/work_sharing.hpp>
+#include <spar/solvers/linear_solver.hpp>
 #include <spar/error.hpp>
 
 #include <algorithm>
@@ -109,10 +110,11 @@ void SystemAssembly::find_substructures() {
       if (root[b] < 0) root[b] = b;
     for (const int b : blocks) root[find(b)] = find(blocks.front());
   }
-  substructures_.assign(static_cast<std::size_t>(size()), -1);
+  substructures_.assign(static_cast<std::size_t>(size()), interface_unknown);
   for (int b = 0; b < model_.block_count(); ++b)
     if (root[b] >= 0)
       std::fill_n(substructures_.begin() + q.blocks[b].offset, q.blocks[b].size, find(b));
+  for (const int dof : model_.fixed_dofs()) substructures_[dof] = fixed_unknown;
 }
 
 void SystemAssembly::compute_element(int id, const core::ElementInput& in,

@@ -52,8 +52,9 @@ public:
   /// The first multiplier of constraint ci.
   int first_multiplier(int ci) const { return constraint_work_[ci].first_multiplier; }
   /// For substructuring (LinearSolver::set_substructures): per unknown, the substructure of its
-  /// block — blocks joined by elements form one (a beam, a rigid body) — or −1 for the
-  /// multipliers and the blocks no element holds (a sliding joint's ζ).
+  /// block — blocks joined by elements form one (a beam, a rigid body) —, interface_unknown for
+  /// the multipliers and the blocks no element holds (a sliding joint's ζ), fixed_unknown for the
+  /// model's fixed dofs (whose rows and columns the Dirichlet conditions empty).
   const std::vector<int>& substructures() const { return substructures_; }
   core::SparsePattern& pattern() { return *pattern_; }
   const core::SparsePattern& pattern() const { return *pattern_; }

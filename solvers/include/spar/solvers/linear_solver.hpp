@@ -38,6 +38,10 @@ LinearSolverKind linear_solver_kind_from_string(std::string_view name);
 /// The name of a solver kind, as accepted by linear_solver_kind_from_string.
 std::string_view to_string(LinearSolverKind kind);
 
+/// Substructure ids of LinearSolver::set_substructures that are not a substructure.
+inline constexpr int interface_unknown = -1;
+inline constexpr int fixed_unknown = -2;
+
 /// When a backend that can factorize by substructures (LinearSolver::set_substructures) does.
 enum class Substructuring {
   when_cheaper,  ///< when its factorization takes clearly fewer flops than the whole matrix's
@@ -76,7 +80,8 @@ public:
   void solve(Eigen::Ref<Eigen::VectorXd> b);
 
   /// Optional, before analyze: the substructure of every unknown (≥ 0; e.g. the beam it belongs
-  /// to) or −1 for the interface (multipliers, coordinates that no element holds). A backend may
+  /// to), interface_unknown for the interface (multipliers, coordinates that no element holds) or
+  /// fixed_unknown for a fixed dof (its row and column hold only the diagonal). A backend may
   /// then factorize by substructuring, refining the solution against A itself (KLU does when it
   /// pays; docs/dynamics.md D12); the others ignore it. Empty (the default): A as a whole. Kept
   /// for later analyses; analyze throws spar::Error when its size is not A's.
