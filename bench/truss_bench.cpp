@@ -36,19 +36,23 @@ struct Deployment {
 };
 
 /// Steps 0 … 1 s of the deployment, from the model's construction on; the second argument 0
-/// factorizes the whole matrix, 1 by substructures (the default).
+/// factorizes the whole matrix, 1 by substructures (the default; `modified` never does, D12).
 void truss_deployment_first_second(benchmark::State& state) {
   const solvers::IterationMatrix strategy = strategies[state.range(0)];
   const bool substructuring = state.range(1) != 0;
+  bool substructured = false;
   for (auto _ : state) {
     Deployment run(strategy, substructuring);
     while (run.integrator->time() < 1.0 - 0.0025) run.integrator->step();
     state.counters["newton_iterations"] = static_cast<double>(run.integrator->counters().newton_iterations);
     state.counters["factorizations"] = static_cast<double>(run.integrator->counters().factorizations);
+    substructured = run.integrator->counters().substructured_factorizations > 0;
   }
-  state.SetLabel(std::string(solvers::to_string(strategy)) + (substructuring ? ", substructured" : ", whole matrix"));
+  state.SetLabel(std::string(solvers::to_string(strategy)) + (substructured ? ", substructured" : ", whole matrix"));
 }
-BENCHMARK(truss_deployment_first_second)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(truss_deployment_first_second)
+    ->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1})->Args({2, 1})
+    ->Unit(benchmark::kMillisecond);
 
 /// One step from t = 2 s on (β ≈ 7°, the cosine law accelerating).
 void truss_deployment_step(benchmark::State& state) {
