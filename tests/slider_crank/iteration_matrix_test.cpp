@@ -117,3 +117,36 @@ TEST_CASE("the assembled dynamic iteration matrix is the derivative of the assem
   CHECK(lambda_tangent <= 1e-7);
   CHECK(S.bottomRightCorner(m, m).norm() == 0.0);
 }
+
+TEST_CASE("the assembly's substructures: one per body, the multipliers and fixed dofs apart",
+          "[dynamics][slider_crank][substructuring]") {
+  // Rod I, Rod II and the slider are three bodies (blocks joined by elements); the joints'
+  // multipliers are the interface (docs/dynamics.md D12).
+  examples::SliderCrank mechanism = examples::build_slider_crank(2);
+  core::Model& model = mechanism.model;
+  const int fixed_block = model.beam(mechanism.crank).node(0);
+  model.fix(fixed_block);  // a fixed node: its dofs are marked apart, whatever body holds them
+  std::vector<joints::Constraint*> constraints;
+  for (const auto& joint : mechanism.joints) constraints.push_back(joint.get());
+  solvers::detail::SystemAssembly assembly(model, constraints, core::AssemblyExecution::serial);
+  const std::vector<int>& substructure = assembly.substructures();
+  REQUIRE(static_cast<int>(substructure.size()) == assembly.size());
+  const core::Configuration& q = model.state();
+  const auto id = [&](int block) { return substructure[q.blocks[block].offset]; };
+  const core::GeometricallyExactBeam& crank = model.beam(mechanism.crank);
+  const core::GeometricallyExactBeam& coupler = model.beam(mechanism.coupler);
+  const int crank_id = id(crank.node(1)), coupler_id = id(coupler.node(0));
+  CHECK(crank_id >= 0);
+  CHECK(coupler_id >= 0);
+  CHECK(id(mechanism.slider_node) >= 0);
+  CHECK(crank_id != coupler_id);
+  CHECK(id(mechanism.slider_node) != crank_id);
+  CHECK(id(mechanism.slider_node) != coupler_id);
+  for (int i = 1; i < crank.control_point_count(); ++i) {
+    const auto& block = q.blocks[crank.node(i)];
+    for (int k = 0; k < block.size; ++k) CHECK(substructure[block.offset + k] == crank_id);
+  }
+  for (int i = 0; i < coupler.control_point_count(); ++i) CHECK(id(coupler.node(i)) == coupler_id);
+  for (int k = 0; k < 6; ++k) CHECK(substructure[q.blocks[fixed_block].offset + k] == solvers::fixed_unknown);
+  for (int i = assembly.dof_count(); i < assembly.size(); ++i) CHECK(substructure[i] == solvers::interface_unknown);
+}

@@ -218,6 +218,29 @@ TEST_CASE("substructuring: a P that is singular where A is not falls back to the
   }
 }
 
+TEST_CASE("substructuring: fixed unknowns are solved as the identity rows they are",
+          "[solvers][substructuring]") {
+  // A fixed dof after the Dirichlet conditions (core::SparsePattern::apply_dirichlet): its row and
+  // column keep their pattern, with zeros, and a 1 on the diagonal. P leaves those zeros out.
+  Frame frame = lattice_frame(3, 6, 1e-3, 2.0);
+  const int first_node = 6;
+  for (int column = 0; column < frame.A.cols(); ++column)
+    for (SparseMatrix::InnerIterator entry(frame.A, column); entry; ++entry)
+      if (entry.row() < first_node || column < first_node)
+        entry.valueRef() = entry.row() == column ? 1.0 : 0.0;
+  for (int i = 0; i < first_node; ++i) frame.substructure[i] = solvers::fixed_unknown;
+  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(frame.A.rows(), -1.0, 2.0);
+  b.head(first_node).setZero();
+  auto solver = solvers::make_linear_solver(LinearSolverKind::klu);
+  solver->set_substructures(frame.substructure, solvers::Substructuring::always);
+  const Eigen::VectorXd x = solve_with(*solver, frame.A, b);
+  CHECK(solver->substructured());
+  CHECK(x.head(first_node).lpNorm<Eigen::Infinity>() == 0.0);
+  CHECK(relative_residual(frame.A, x, b) <= 1e-15);
+  const Eigen::VectorXd reference = eigen_lu(frame.A, b);
+  CHECK((x - reference).lpNorm<Eigen::Infinity>() <= 1e-13 * reference.lpNorm<Eigen::Infinity>());
+}
+
 TEST_CASE("substructuring: substructures of the wrong size are refused at analyze", "[solvers][substructuring]") {
   const Frame frame = lattice_frame(2, 3, 1e-3, 0.5);
   for (LinearSolverKind kind : {LinearSolverKind::klu, LinearSolverKind::umfpack}) {
