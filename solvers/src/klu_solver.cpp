@@ -33,7 +33,9 @@ class KluSolver final : public LinearSolver {
 public:
   KluSolver() : LinearSolver(LinearSolverKind::klu) { klu_defaults(&common_); }
 
-  bool substructured() const noexcept override { return mode_ == Mode::substructured && !whole_now_; }
+  bool substructured() const noexcept override {
+    return mode_ == Mode::substructured && !whole_this_matrix_;
+  }
 
 private:
   struct SymbolicDeleter {
@@ -70,17 +72,17 @@ private:
     int row_scaling;
   };
 
-  /// undecided: the pattern's first factorization chooses; exact: A with the better of AMD and
+  /// undecided: the pattern's first factorization chooses; whole: A with the better of AMD and
   /// COLAMD; substructured: P (substructuring.hpp) and refinement against A.
-  enum class Mode { undecided, exact, substructured };
+  enum class Mode { undecided, whole, substructured };
 
   void analyze_pattern(const SparseMatrix& A) override {
     const int n = static_cast<int>(A.rows());
     mode_ = Mode::undecided;
-    whole_now_ = false;
+    whole_this_matrix_ = false;
     failures_ = 0;
-    exact_.numeric.reset();
-    exact_.symbolic.reset();
+    whole_.numeric.reset();
+    whole_.symbolic.reset();
     substructured_.numeric.reset();
     substructured_.symbolic.reset();
     for (int ordering : {amd, colamd}) {
@@ -96,7 +98,8 @@ private:
     // dofs) and the same permutation for rows and columns, so that the diagonal stays preferred.
     common_.btf = 0;
     substructured_.symbolic.reset(klu_analyze_given(n, pattern_.column_starts.data(),
-                                                    pattern_.row_indices.data(), pattern_.ordering.data(),
+                                                    pattern_.row_indices.data(),
+                                                    pattern_.ordering.data(),
                                                     pattern_.ordering.data(), &common_));
     common_.btf = 1;
     if (!substructured_.symbolic) throw_library_failure("klu_analyze_given", common_.status);
@@ -105,7 +108,7 @@ private:
   }
 
   FactorizationOutcome factorize_values(const SparseMatrix& A) override {
-    if (substructured_.symbolic && mode_ != Mode::exact) {
+    if (substructured_.symbolic && mode_ != Mode::whole) {
       std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), system_.valuePtr());
       for (std::size_t k = 0; k < pattern_.source.size(); ++k)
         preconditioner_values_[k] = system_.valuePtr()[pattern_.source[k]];
@@ -113,17 +116,17 @@ private:
     }
     if (mode_ == Mode::undecided) return factorize_choosing_method(A);
     if (mode_ == Mode::substructured) {
-      whole_now_ = false;
+      whole_this_matrix_ = false;
       if (factorize_with(preconditioner(), substructured_) == FactorizationOutcome::succeeded)
         return FactorizationOutcome::succeeded;
       note_failure();  // P is singular (a body held only through a dropped coupling)
     }
-    return factorize_with(whole(A), exact_);
+    return factorize_with(whole(A), whole_);
   }
 
   void solve_in_place(Eigen::Ref<Eigen::VectorXd> b) override {
-    if (mode_ != Mode::substructured || whole_now_) {
-      back_substitute(exact_, b);
+    if (mode_ != Mode::substructured || whole_this_matrix_) {
+      back_substitute(whole_, b);
       return;
     }
     right_hand_side_ = b;
@@ -135,26 +138,27 @@ private:
     // The dropped couplings are too strong for the refinement (seen at a diverging Newton iterate
     // of the linear law, which the step's cut-back then left): A as a whole for this matrix.
     note_failure();
-    if (factorize_with(whole(system_), exact_) == FactorizationOutcome::singular)
+    if (factorize_with(whole(system_), whole_) == FactorizationOutcome::singular)
       throw Error("numerically singular iteration matrix — check for a redundant constraint or an "
                   "unconstrained rigid-body mode",
                   "solvers::LinearSolver::solve (klu)",
                   "remove the redundant constraint or add the support that fixes the free motion");
     b = right_hand_side_;
-    back_substitute(exact_, b);
+    back_substitute(whole_, b);
   }
 
   /// The current matrix goes as a whole; after max_substructured_failures failures in a row, every
   /// later one of the pattern too.
   void note_failure() {
-    whole_now_ = true;
-    if (++failures_ >= max_substructured_failures) mode_ = Mode::exact;
+    whole_this_matrix_ = true;
+    if (++failures_ >= max_substructured_failures) mode_ = Mode::whole;
   }
 
   /// The first factorization of a pattern, by each candidate method: keeps the cheapest (the
   /// substructured one only when it takes less than half the flops of the better ordering of A,
-  /// its refinement costing one or two more solves, or always when so asked). When nothing factorizes (a singular matrix),
-  /// mode_ stays undecided and the candidates wait for the pattern's next matrix.
+  /// its refinement costing one or two more solves, or always when so asked). When nothing
+  /// factorizes (a singular matrix), mode_ stays undecided and the candidates wait for the
+  /// pattern's next matrix.
   FactorizationOutcome factorize_choosing_method(const SparseMatrix& A) {
     double best_flops = INFINITY;
     int status = KLU_OK;
@@ -167,7 +171,7 @@ private:
       }
       if (common_.flops < best_flops) {
         best_flops = common_.flops;
-        std::swap(exact_, candidate);
+        std::swap(whole_, candidate);
       }
     }
     if (substructured_.symbolic &&
@@ -176,8 +180,8 @@ private:
         (substructuring() == Substructuring::always ||
          common_.flops < (pattern_.dropped > 0 ? substructured_flop_share : 1.0) * best_flops)) {
       mode_ = Mode::substructured;
-    } else if (exact_.numeric) {
-      mode_ = Mode::exact;
+    } else if (whole_.numeric) {
+      mode_ = Mode::whole;
       substructured_.numeric.reset();
     } else {
       common_.status = status;
@@ -240,9 +244,12 @@ private:
     }
   }
 
-  static Columns whole(const SparseMatrix& A) { return {column_starts(A), row_indices(A), values(A)}; }
+  static Columns whole(const SparseMatrix& A) {
+    return {column_starts(A), row_indices(A), values(A)};
+  }
   Columns preconditioner() {
-    return {pattern_.column_starts.data(), pattern_.row_indices.data(), preconditioner_values_.data()};
+    return {pattern_.column_starts.data(), pattern_.row_indices.data(),
+            preconditioner_values_.data()};
   }
 
   /// The factor by which the pivot ratio of a refactorization may fall below that of the last
@@ -253,8 +260,8 @@ private:
   /// On P, the interface's diagonal (the dual Schur complement, small against the couplings of a
   /// sliding joint's ζ) is kept unless a million times smaller than its column: with KLU's 1e-3,
   /// 88 of the truss unit's 208 interface pivots went off the diagonal and doubled the flops
-  /// (2.1 against 1.3 Mflop, frame 0 still in P). The refinement against A and the pivot-ratio test of every
-  /// refactorization guard the accuracy.
+  /// (2.1 against 1.3 Mflop, frame 0 still in P). The refinement against A and the pivot-ratio
+  /// test of every refactorization guard the accuracy.
   static constexpr double substructured_pivot_tolerance = 1e-6;
   /// KLU's default row scaling for A as a whole (each row by its largest entry).
   static constexpr int whole_row_scaling = 2;
@@ -282,14 +289,15 @@ private:
   klu_common common_{};
   Mode mode_ = Mode::undecided;
   /// The current matrix was factorized as a whole after a failure of substructuring.
-  bool whole_now_ = false;
+  bool whole_this_matrix_ = false;
   /// Failures of substructuring in a row.
   int failures_ = 0;
   // Declared after common_, so destroyed (and freed through it) before it.
-  Factorization exact_{&common_, whole_pivot_tolerance, whole_row_scaling};
+  Factorization whole_{&common_, whole_pivot_tolerance, whole_row_scaling};
   Factorization substructured_{&common_, substructured_pivot_tolerance, substructured_row_scaling};
-  std::array<Factorization, 2> candidates_{Factorization{&common_, whole_pivot_tolerance, whole_row_scaling},
-                                           Factorization{&common_, whole_pivot_tolerance, whole_row_scaling}};
+  std::array<Factorization, 2> candidates_{
+      Factorization{&common_, whole_pivot_tolerance, whole_row_scaling},
+      Factorization{&common_, whole_pivot_tolerance, whole_row_scaling}};
   SubstructuredPattern pattern_;
   /// A's pattern and the values of its last factorization (the refinement's residual).
   SparseMatrix system_;

@@ -59,12 +59,13 @@ SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
   // complement and is ordered for its own fill. With the boundary among the inner unknowns, each
   // interface row would fill across its whole substructure.
   std::vector<int> constraint_set(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) constraint_set[i] = substructure[i] == interface_unknown ? interface : inner;
+  const auto on_interface = [&](int i) { return substructure[i] == interface_unknown; };
+  for (int i = 0; i < n; ++i) constraint_set[i] = on_interface(i) ? interface : inner;
   for (int column = 0; column < n; ++column)
     for (int k = p.column_starts[column]; k < p.column_starts[column + 1]; ++k) {
       const int row = p.row_indices[k];
-      if (substructure[row] == interface_unknown && substructure[column] >= 0) constraint_set[column] = boundary;
-      if (substructure[column] == interface_unknown && substructure[row] >= 0) constraint_set[row] = boundary;
+      if (on_interface(row) && substructure[column] >= 0) constraint_set[column] = boundary;
+      if (on_interface(column) && substructure[row] >= 0) constraint_set[row] = boundary;
     }
   std::array<double, CAMD_CONTROL> control{};
   std::array<double, CAMD_INFO> info{};
