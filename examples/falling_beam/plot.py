@@ -6,51 +6,26 @@ Usage: plot.py [results/falling_beam_rancf results/falling_beam_ancf]
        (each folder from `falling_beam --element ... --out <folder>`; writes falling_beam.png
        into the first folder). Needs Debian's python3-matplotlib (installed by scripts/setup.sh).
 """
-import csv
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from plotting import (column, decorate_panels, figure_grid, length_control_runs,  # noqa: E402
+                      plot_centrelines_before_after, plot_total_and_kinetic_energy, results_folders, save_figure)
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-folders = sys.argv[1:] or ["results/falling_beam_rancf", "results/falling_beam_ancf"]
-
-
-def read(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-fig, axes = plt.subplots(2, 2, figsize=(11, 8))
-for i, folder in enumerate(folders):
-    label = os.path.basename(os.path.normpath(folder))
-    rows = read(os.path.join(folder, "falling_beam.csv"))
-    t = [float(r["t"]) for r in rows]
-    shapes = read(os.path.join(folder, "falling_beam_shapes.csv"))
-    for event in sorted({int(s["event"]) for s in shapes}):
-        for phase, style in ((0, "-"), (1, "--")):
-            pts = [(float(s["x"]), float(s["y"])) for s in shapes if int(s["event"]) == event and int(s["phase"]) == phase]
-            axes[0][0].plot([p[0] for p in pts], [p[1] for p in pts], style, color=f"C{i}",
-                            label=f"{label}: before/after LC" if event == 0 and phase == 0 else None)
-    axes[0][1].plot(t, [float(r["right_end_y"]) for r in rows], color=f"C{i}", label=label)
-    axes[1][0].plot([float(r["mass_x"]) for r in rows], [float(r["mass_y"]) for r in rows], color=f"C{i}", label=label)
-    axes[1][1].plot(t, [float(r["total_energy"]) for r in rows], color=f"C{i}", label=f"{label}: total")
-    axes[1][1].plot(t, [float(r["kinetic_energy"]) for r in rows], ":", color=f"C{i}", label=f"{label}: kinetic")
+folders = results_folders(["results/falling_beam_rancf", "results/falling_beam_ancf"])
+fig, axes = figure_grid(2, 2, (11, 8))
+for colour, label, rows, shapes in length_control_runs(folders, "falling_beam"):
+    t = column(rows, "t")
+    plot_centrelines_before_after(axes[0][0], shapes, colour, label)
+    axes[0][1].plot(t, column(rows, "right_end_y"), color=colour, label=label)
+    axes[1][0].plot(column(rows, "mass_x"), column(rows, "mass_y"), color=colour, label=label)
+    plot_total_and_kinetic_energy(axes[1][1], rows, colour, label)
 
 titles = [("(a) configurations before (—) and after (--) length control", "x [m]", "y [m]"),
           ("(b) Y displacement of the right end (Figure 10)", "t [s]", "y [m]"),
           ("(c) path of the mass (Figure 11)", "x [m]", "y [m]"),
           ("(d) energies", "t [s]", "energy [J]")]
-for ax, (title, xlabel, ylabel) in zip(axes.flat, titles):
-    ax.set_title(title, fontsize=9)
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+decorate_panels(axes, titles)
 axes[0][0].set_aspect("equal")
-fig.tight_layout()
-out = os.path.join(folders[0], "falling_beam.png")
-fig.savefig(out, dpi=150)
-print(out)
+save_figure(fig, os.path.join(folders[0], "falling_beam.png"), 150)

@@ -1,0 +1,106 @@
+"""What the examples' plot scripts share: finding and reading a run's CSV results, the figure set-up
+and saving, and the length-control panels of the sliding-mass examples (falling_beam,
+suspended_beam, semicircular_beam).
+
+A plot script imports it relative to its own file, so it runs from any directory:
+
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+    from plotting import column, figure_grid, read_results_csv, results_folder, save_figure
+
+Importing it selects matplotlib's file-only backend (Agg): the scripts run without a display.
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def results_folder(default):
+    """The results folder named by the script's first argument, else `default`."""
+    return sys.argv[1] if len(sys.argv) > 1 else default
+
+
+def results_folders(defaults):
+    """The results folders named by the script's arguments (one per run), else `defaults`."""
+    return sys.argv[1:] or defaults
+
+
+def run_label(folder):
+    """The legend label of a run: the last component of its results folder."""
+    return os.path.basename(os.path.normpath(folder))
+
+
+def read_results_csv(folder, name):
+    """The rows of the CSV file `name` in `folder`, each a dict from column name to text."""
+    with open(os.path.join(folder, name)) as f:
+        return list(csv.DictReader(f))
+
+
+def column(rows, name):
+    """The column `name` of CSV rows as floats."""
+    return [float(r[name]) for r in rows]
+
+
+def figure_grid(nrows, ncols, figsize, **kwargs):
+    """A new figure with an nrows × ncols grid of panels (plt.subplots; kwargs such as sharex pass on)."""
+    return plt.subplots(nrows, ncols, figsize=figsize, **kwargs)
+
+
+def save_figure(fig, path, dpi):
+    """Lays out the panels, writes the figure to `path` and says so on stdout."""
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    print(f"wrote {path}")
+
+
+def length_control_runs(folders, example):
+    """Each sliding-mass run's (colour, legend label, rows of <example>.csv, rows of
+    <example>_shapes.csv), one colour per results folder (C0, C1, ...)."""
+    for i, folder in enumerate(folders):
+        yield (f"C{i}", run_label(folder), read_results_csv(folder, f"{example}.csv"),
+               read_results_csv(folder, f"{example}_shapes.csv"))
+
+
+def plot_total_and_kinetic_energy(ax, rows, colour, label, change=False):
+    """One run's total energy (solid; with change=True its change E - E0) and kinetic energy (dotted)."""
+    t = column(rows, "t")
+    total = column(rows, "total_energy")
+    if change:
+        ax.plot(t, [e - total[0] for e in total], color=colour, label=f"{label}: E - E0")
+    else:
+        ax.plot(t, total, color=colour, label=f"{label}: total")
+    ax.plot(t, column(rows, "kinetic_energy"), ":", color=colour, label=f"{label}: kinetic")
+
+
+def length_control_events(shapes):
+    """The length-control event numbers in the rows of an example's *_shapes.csv, in order."""
+    return sorted({int(s["event"]) for s in shapes})
+
+
+def centreline(shapes, event, phase):
+    """The beam's centreline (xs, ys) at a length-control event: phase 0 just before, 1 just after."""
+    pts = [(float(s["x"]), float(s["y"])) for s in shapes if int(s["event"]) == event and int(s["phase"]) == phase]
+    return [p[0] for p in pts], [p[1] for p in pts]
+
+
+def plot_centrelines_before_after(ax, shapes, color, label):
+    """One run's centrelines just before (—) and just after (--) every length-control event, in one
+    colour, labelled once."""
+    for event in length_control_events(shapes):
+        for phase, style in ((0, "-"), (1, "--")):
+            xs, ys = centreline(shapes, event, phase)
+            ax.plot(xs, ys, style, color=color, label=f"{label}: before/after LC" if event == 0 and phase == 0 else None)
+
+
+def decorate_panels(axes, titles):
+    """Gives each panel of a grid its (title, x label, y label), a light grid and a small legend."""
+    for ax, (title, xlabel, ylabel) in zip(axes.flat, titles):
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
