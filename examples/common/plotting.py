@@ -1,6 +1,6 @@
-"""What the examples' plot scripts share: finding and reading a run's CSV results, the figure set-up
-and saving, and the length-control panels of the sliding-mass examples (falling_beam,
-suspended_beam, semicircular_beam).
+"""What the examples' plot scripts share: finding and reading a run's CSV results, the figure set-up,
+panel labelling and saving, the energy-balance panel of the dynamic examples, and the
+length-control panels of the sliding-mass examples (falling_beam, suspended_beam, semicircular_beam).
 
 A plot script imports it relative to its own file, so it runs from any directory:
 
@@ -96,11 +96,33 @@ def plot_centrelines_before_after(ax, shapes, color, label):
             ax.plot(xs, ys, style, color=color, label=f"{label}: before/after LC" if event == 0 and phase == 0 else None)
 
 
-def decorate_panels(axes, titles):
-    """Gives each panel of a grid its (title, x label, y label), a light grid and a small legend."""
-    for ax, (title, xlabel, ylabel) in zip(axes.flat, titles):
-        ax.set_title(title, fontsize=9)
-        ax.set_xlabel(xlabel)
+def label_panel(ax, title, xlabel, ylabel=None, legend=True, legend_fontsize=8, **title_style):
+    """Gives a panel its title (title_style such as fontsize passes on), axis labels and a light grid,
+    and, with legend=True, a legend of the labelled lines."""
+    ax.set_title(title, **title_style)
+    ax.set_xlabel(xlabel)
+    if ylabel is not None:
         ax.set_ylabel(ylabel)
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7)
+    ax.grid(True, alpha=0.3)
+    if legend:
+        ax.legend(fontsize=legend_fontsize)
+
+
+def decorate_panels(axes, titles):
+    """Gives each panel of a grid its (title, x label, y label) in the sliding-mass examples' small
+    type, a light grid and a legend."""
+    for ax, (title, xlabel, ylabel) in zip(axes.flat, titles):
+        label_panel(ax, title, xlabel, ylabel, legend_fontsize=7, fontsize=9)
+
+
+def plot_energy_balance(ax, rows):
+    """The energy-balance panel every dynamic example's plot shows (docs/dynamics.md D8): E - E(0)
+    (E = kinetic + strain + gravity, whichever columns the CSV rows have), the work W of the
+    external loads and drivers, and the numerical dissipation D = W - (E - E(0))."""
+    t = column(rows, "t")
+    parts = [c for c in ("kinetic_energy", "strain_energy", "gravity_potential") if c in rows[0]]
+    energy = [sum(float(r[c]) for c in parts) for r in rows]
+    ax.plot(t, [e - energy[0] for e in energy], label="E - E(0)")
+    ax.plot(t, column(rows, "external_work"), "--", label="external work W")
+    ax.plot(t, column(rows, "numerical_dissipation"), color="C3", label="numerical dissipation W - (E - E(0))")
+    label_panel(ax, "energy balance", "t [s]", "energy [J]")
