@@ -76,6 +76,35 @@ def plot_total_and_kinetic_energy(ax, rows, colour, label, change=False):
     ax.plot(t, column(rows, "kinetic_energy"), ":", color=colour, label=f"{label}: kinetic")
 
 
+def plot_run_with_energy_balance(example, plot_panels):
+    """The figure of a dynamic example's run (flexible_pendulum, heavy_top, four_bar): reads
+    <example>.csv from the folder given on the command line (default results/<example>), lets
+    plot_panels(axes, rows, t) draw three panels of a 2 × 2 grid, puts the energy balance in the fourth
+    (bottom right) and writes <example>.png into the folder."""
+    folder = results_folder(f"results/{example}")
+    rows = read_results_csv(folder, f"{example}.csv")
+    fig, axes = figure_grid(2, 2, (10, 8))
+    plot_panels(axes, rows, column(rows, "t"))
+    plot_energy_balance(axes[1][1], rows)
+    save_figure(fig, os.path.join(folder, f"{example}.png"), 120)
+
+
+def plot_before_after_figure(example, folders, plot_middle_panels, middle_titles):
+    """The figure of falling_beam and suspended_beam (000 Figures 10-14), one colour per run:
+    (a) the centrelines just before and after each length-control event, (b) and (c) drawn by
+    plot_middle_panels(axes, rows, colour, label) with their (title, x label, y label) in
+    middle_titles, (d) the total and kinetic energies; written to <example>.png in the first folder."""
+    fig, axes = figure_grid(2, 2, (11, 8))
+    for colour, label, rows, shapes in length_control_runs(folders, example):
+        plot_centrelines_before_after(axes[0][0], shapes, colour, label)
+        plot_middle_panels(axes, rows, colour, label)
+        plot_total_and_kinetic_energy(axes[1][1], rows, colour, label)
+    decorate_panels(axes, [("(a) configurations before (—) and after (--) length control", "x [m]", "y [m]"),
+                           *middle_titles, ("(d) energies", "t [s]", "energy [J]")])
+    axes[0][0].set_aspect("equal")
+    save_figure(fig, os.path.join(folders[0], f"{example}.png"), 150)
+
+
 def length_control_events(shapes):
     """The length-control event numbers in the rows of an example's *_shapes.csv, in order."""
     return sorted({int(s["event"]) for s in shapes})
@@ -93,7 +122,8 @@ def plot_centrelines_before_after(ax, shapes, color, label):
     for event in length_control_events(shapes):
         for phase, style in ((0, "-"), (1, "--")):
             xs, ys = centreline(shapes, event, phase)
-            ax.plot(xs, ys, style, color=color, label=f"{label}: before/after LC" if event == 0 and phase == 0 else None)
+            first = event == 0 and phase == 0
+            ax.plot(xs, ys, style, color=color, label=f"{label}: before/after LC" if first else None)
 
 
 def label_panel(ax, title, xlabel, ylabel=None, legend=True, legend_fontsize=8, **title_style):

@@ -10,22 +10,16 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import (column, decorate_panels, figure_grid, length_control_runs,  # noqa: E402
-                      plot_centrelines_before_after, plot_total_and_kinetic_energy, results_folders, save_figure)
+from plotting import column, plot_before_after_figure, results_folders  # noqa: E402
 
-folders = results_folders(["results/falling_beam_rancf", "results/falling_beam_ancf"])
-fig, axes = figure_grid(2, 2, (11, 8))
-for colour, label, rows, shapes in length_control_runs(folders, "falling_beam"):
-    t = column(rows, "t")
-    plot_centrelines_before_after(axes[0][0], shapes, colour, label)
-    axes[0][1].plot(t, column(rows, "right_end_y"), color=colour, label=label)
+
+def plot_right_end_and_mass(axes, rows, colour, label):
+    """(b) the Y displacement of the right end, (c) the path of the mass."""
+    axes[0][1].plot(column(rows, "t"), column(rows, "right_end_y"), color=colour, label=label)
     axes[1][0].plot(column(rows, "mass_x"), column(rows, "mass_y"), color=colour, label=label)
-    plot_total_and_kinetic_energy(axes[1][1], rows, colour, label)
 
-titles = [("(a) configurations before (—) and after (--) length control", "x [m]", "y [m]"),
-          ("(b) Y displacement of the right end (Figure 10)", "t [s]", "y [m]"),
-          ("(c) path of the mass (Figure 11)", "x [m]", "y [m]"),
-          ("(d) energies", "t [s]", "energy [J]")]
-decorate_panels(axes, titles)
-axes[0][0].set_aspect("equal")
-save_figure(fig, os.path.join(folders[0], "falling_beam.png"), 150)
+
+plot_before_after_figure("falling_beam", results_folders(["results/falling_beam_rancf", "results/falling_beam_ancf"]),
+                         plot_right_end_and_mass,
+                         [("(b) Y displacement of the right end (Figure 10)", "t [s]", "y [m]"),
+                          ("(c) path of the mass (Figure 11)", "x [m]", "y [m]")])

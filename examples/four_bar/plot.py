@@ -9,28 +9,25 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import (column, figure_grid, label_panel, plot_energy_balance, read_results_csv,  # noqa: E402
-                      results_folder, save_figure)
+from plotting import column, label_panel, plot_run_with_energy_balance  # noqa: E402
 
-folder = results_folder("results/four_bar")
-rows = read_results_csv(folder, "four_bar.csv")
-t = column(rows, "t")
-fig, axes = figure_grid(2, 2, (10, 8))
 
-ax = axes[0][0]
-ax.plot(t, [math.degrees(a) for a in column(rows, "rocker_angle")], color="C0", label="flexible rocker (chord)")
-ax.plot(t, [math.degrees(a) for a in column(rows, "rigid_rocker_angle")], "k--", lw=0.8, label="rigid four-bar")
-label_panel(ax, "rocker angle", "t [s]", "rocker angle [deg]")
+def plot_panels(axes, rows, t):
+    """The rocker angle against the rigid four-bar, their difference and the energies."""
+    ax = axes[0][0]
+    ax.plot(t, [math.degrees(a) for a in column(rows, "rocker_angle")], color="C0", label="flexible rocker (chord)")
+    ax.plot(t, [math.degrees(a) for a in column(rows, "rigid_rocker_angle")], "k--", lw=0.8, label="rigid four-bar")
+    label_panel(ax, "rocker angle", "t [s]", "rocker angle [deg]")
 
-ax = axes[0][1]
-ax.plot(t, [1e6 * e for e in column(rows, "rocker_angle_error")], color="C1")  # stored in rad, shown in µrad
-label_panel(ax, "rocker angle against the rigid four-bar", "t [s]", "flexible - rigid [µrad]", legend=False)
+    ax = axes[0][1]
+    ax.plot(t, [1e6 * e for e in column(rows, "rocker_angle_error")], color="C1")  # stored in rad, shown in µrad
+    label_panel(ax, "rocker angle against the rigid four-bar", "t [s]", "flexible - rigid [µrad]", legend=False)
 
-ax = axes[1][0]
-ax.plot(t, column(rows, "kinetic_energy"), label="kinetic")
-ax.plot(t, column(rows, "gravity_potential"), label="gravity potential")
-ax.plot(t, [1e3 * s for s in column(rows, "strain_energy")], label="strain × 1000")
-label_panel(ax, "energies", "t [s]", "energy [J]")
+    ax = axes[1][0]
+    ax.plot(t, column(rows, "kinetic_energy"), label="kinetic")
+    ax.plot(t, column(rows, "gravity_potential"), label="gravity potential")
+    ax.plot(t, [1e3 * s for s in column(rows, "strain_energy")], label="strain × 1000")
+    label_panel(ax, "energies", "t [s]", "energy [J]")
 
-plot_energy_balance(axes[1][1], rows)
-save_figure(fig, os.path.join(folder, "four_bar.png"), 120)
+
+plot_run_with_energy_balance("four_bar", plot_panels)

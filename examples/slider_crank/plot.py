@@ -8,7 +8,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import column, figure_grid, plot_energy_balance, read_results_csv, results_folder, save_figure  # noqa: E402
+from plotting import (column, figure_grid, plot_energy_balance, read_results_csv, results_folder,  # noqa: E402
+                      save_figure)
 
 folder = results_folder("results/slider_crank")
 rows = read_results_csv(folder, "slider_crank.csv")

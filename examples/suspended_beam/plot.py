@@ -10,24 +10,20 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import (column, decorate_panels, figure_grid, length_control_runs,  # noqa: E402
-                      plot_centrelines_before_after, plot_total_and_kinetic_energy, results_folders, save_figure)
+from plotting import column, plot_before_after_figure, results_folders  # noqa: E402
 
-folders = results_folders(["results/suspended_beam_rancf", "results/suspended_beam_ancf"])
-fig, axes = figure_grid(2, 2, (11, 8))
-for colour, label, rows, shapes in length_control_runs(folders, "suspended_beam"):
+
+def plot_length_and_rate(axes, rows, colour, label):
+    """(b) the deformed length of the beam, (c) its rate of change (central differences)."""
     t = column(rows, "t")
     length = column(rows, "beam_length")
     rate = [(length[k + 1] - length[k - 1]) / (t[k + 1] - t[k - 1]) for k in range(1, len(t) - 1)]
-    plot_centrelines_before_after(axes[0][0], shapes, colour, label)
     axes[0][1].plot(t, length, color=colour, label=label)
     axes[1][0].plot(t[1:-1], rate, color=colour, label=label)
-    plot_total_and_kinetic_energy(axes[1][1], rows, colour, label)
 
-titles = [("(a) configurations before (—) and after (--) length control", "x [m]", "y [m]"),
-          ("(b) deformed length of the beam", "t [s]", "length [m]"),
-          ("(c) rate of change of the beam length", "t [s]", "d length/dt [m/s]"),
-          ("(d) energies", "t [s]", "energy [J]")]
-decorate_panels(axes, titles)
-axes[0][0].set_aspect("equal")
-save_figure(fig, os.path.join(folders[0], "suspended_beam.png"), 150)
+
+plot_before_after_figure("suspended_beam",
+                         results_folders(["results/suspended_beam_rancf", "results/suspended_beam_ancf"]),
+                         plot_length_and_rate,
+                         [("(b) deformed length of the beam", "t [s]", "length [m]"),
+                          ("(c) rate of change of the beam length", "t [s]", "d length/dt [m/s]")])
