@@ -5,23 +5,19 @@ Usage: plot.py folder [folder ...]   (reads ancf_pendulum.csv from each, writes 
 Example: plot.py results/ancf_pendulum results/ancf_pendulum_gebt
 Needs Debian's python3-matplotlib (installed by scripts/setup.sh).
 """
-import csv
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from plotting import column, figure_grid, read_results_csv, results_folders, run_label, save_figure  # noqa: E402
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-folders = sys.argv[1:] or ["results/ancf_pendulum"]
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+folders = results_folders(["results/ancf_pendulum"])
+fig, (ax1, ax2) = figure_grid(1, 2, (11, 4.5))
 for folder in folders:
-    with open(os.path.join(folder, "ancf_pendulum.csv")) as f:
-        rows = list(csv.DictReader(f))
-    t = [float(r["t"]) for r in rows]
-    label = os.path.basename(os.path.normpath(folder))
-    ax1.plot([float(r["tip_x"]) for r in rows], [float(r["tip_z"]) for r in rows], label=label)
+    rows = read_results_csv(folder, "ancf_pendulum.csv")
+    t = column(rows, "t")
+    label = run_label(folder)
+    ax1.plot(column(rows, "tip_x"), column(rows, "tip_z"), label=label)
     speed = [(float(r["tip_vx"]) ** 2 + float(r["tip_vz"]) ** 2) ** 0.5 for r in rows]
     ax2.plot(t, speed, label=label)
 ax1.set_xlabel("tip x [m]")
@@ -31,6 +27,4 @@ ax1.legend()
 ax2.set_xlabel("t [s]")
 ax2.set_ylabel("tip speed [m/s]")
 ax2.legend()
-fig.tight_layout()
-fig.savefig(os.path.join(folders[0], "tip.png"), dpi=150)
-print("wrote", os.path.join(folders[0], "tip.png"))
+save_figure(fig, os.path.join(folders[0], "tip.png"), 150)

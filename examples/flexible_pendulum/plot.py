@@ -4,60 +4,31 @@
 Usage: plot.py [results/flexible_pendulum]   (reads flexible_pendulum.csv, writes flexible_pendulum.png)
 Needs Debian's python3-matplotlib (installed by scripts/setup.sh).
 """
-import csv
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from energy_plot import plot_energy_balance  # noqa: E402
-
-folder = sys.argv[1] if len(sys.argv) > 1 else "results/flexible_pendulum"
-with open(os.path.join(folder, "flexible_pendulum.csv")) as f:
-    rows = list(csv.DictReader(f))
+from plotting import column, label_panel, plot_run_with_energy_balance  # noqa: E402
 
 
-def column(name):
-    return [float(r[name]) for r in rows]
+def plot_panels(axes, rows, t):
+    """The tip's path, the rod's bending and the energies."""
+    ax = axes[0][0]
+    ax.plot(column(rows, "tip_x"), column(rows, "tip_z"), "-", color="C0", label="tip")
+    ax.plot([0], [0], "k+", label="pin")
+    ax.set_aspect("equal")
+    label_panel(ax, "tip trajectory", "x [m]", "z [m]")
+
+    ax = axes[0][1]
+    ax.plot(t, [100 * d for d in column(rows, "chord_deflection")], color="C1")  # stored as a fraction, shown in %
+    label_panel(ax, "bending of the rod", "t [s]", "max distance from the chord / L [%]", legend=False)
+
+    ax = axes[1][0]
+    ax.plot(t, column(rows, "kinetic_energy"), label="kinetic")
+    ax.plot(t, column(rows, "gravity_potential"), label="gravity potential")
+    ax.plot(t, column(rows, "strain_energy"), label="strain")
+    ax.plot(t, column(rows, "total_energy"), "k", label="total")
+    label_panel(ax, "energies", "t [s]", "energy [J]")
 
 
-t = column("t")
-fig, axes = plt.subplots(2, 2, figsize=(10, 8))
-
-ax = axes[0][0]
-ax.plot(column("tip_x"), column("tip_z"), "-", color="C0", label="tip")
-ax.plot([0], [0], "k+", label="pin")
-ax.set_aspect("equal")
-ax.set_xlabel("x [m]")
-ax.set_ylabel("z [m]")
-ax.set_title("tip trajectory")
-ax.legend(fontsize=8)
-
-ax = axes[0][1]
-ax.plot(t, [100 * d for d in column("chord_deflection")], color="C1")  # stored as a fraction, shown in %
-ax.set_xlabel("t [s]")
-ax.set_ylabel("max distance from the chord / L [%]")
-ax.set_title("bending of the rod")
-
-ax = axes[1][0]
-ax.plot(t, column("kinetic_energy"), label="kinetic")
-ax.plot(t, column("gravity_potential"), label="gravity potential")
-ax.plot(t, column("strain_energy"), label="strain")
-ax.plot(t, column("total_energy"), "k", label="total")
-ax.set_xlabel("t [s]")
-ax.set_ylabel("energy [J]")
-ax.set_title("energies")
-ax.legend(fontsize=8)
-
-plot_energy_balance(axes[1][1], rows)
-
-for a in axes.flat:
-    a.grid(True, alpha=0.3)
-fig.tight_layout()
-out = os.path.join(folder, "flexible_pendulum.png")
-fig.savefig(out, dpi=120)
-print(f"wrote {out}")
+plot_run_with_energy_balance("flexible_pendulum", plot_panels)

@@ -4,31 +4,25 @@
 Usage: plot.py [results/modal_beam]   (reads modal_beam.csv and modal_beam_shapes.csv, writes modal_beam.png)
 Needs Debian's python3-matplotlib (installed by scripts/setup.sh).
 """
-import csv
-import math
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from plotting import column, figure_grid, read_results_csv, results_folder, save_figure  # noqa: E402
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+folder = results_folder("results/modal_beam")
+modes = read_results_csv(folder, "modal_beam.csv")
+shapes = read_results_csv(folder, "modal_beam_shapes.csv")
 
-folder = sys.argv[1] if len(sys.argv) > 1 else "results/modal_beam"
-with open(os.path.join(folder, "modal_beam.csv")) as f:
-    modes = list(csv.DictReader(f))
-with open(os.path.join(folder, "modal_beam_shapes.csv")) as f:
-    shapes = list(csv.DictReader(f))
-
-fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+fig, axes = figure_grid(1, 2, (11, 4.5))
 ax = axes[0]
 bending = [m for m in modes if m["timoshenko_hz"] not in ("nan", "")][:6]
 for m in bending:
     rows = [r for r in shapes if r["mode"] == m["mode"]]
     x = [float(r["x0"]) for r in rows]
     # The transverse displacement (the larger of y and z), control points as markers.
-    dy = [float(r["dy"]) for r in rows]
-    dz = [float(r["dz"]) for r in rows]
+    dy = column(rows, "dy")
+    dz = column(rows, "dz")
     d = dy if max(map(abs, dy)) > max(map(abs, dz)) else dz
     ax.plot(x, d, ".-", ms=3, label=f"mode {m['mode']}: {float(m['frequency_hz']):.1f} Hz")
 ax.set_xlabel("x [m]")
@@ -46,7 +40,4 @@ ax.set_title("against the exact Timoshenko beam")
 
 for a in axes:
     a.grid(True, alpha=0.3)
-fig.tight_layout()
-out = os.path.join(folder, "modal_beam.png")
-fig.savefig(out, dpi=120)
-print(f"wrote {out}")
+save_figure(fig, os.path.join(folder, "modal_beam.png"), 120)

@@ -7,55 +7,30 @@ Usage: plot.py results/semicircular_beam_8 results/semicircular_beam_16 ...
        (each folder from `semicircular_beam --elements N --out <folder>`; writes
        semicircular_beam.png into the first folder). Needs Debian's python3-matplotlib.
 """
-import csv
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from plotting import (centreline, column, decorate_panels, figure_grid, length_control_events,  # noqa: E402
+                      length_control_runs, plot_total_and_kinetic_energy, results_folders, save_figure)
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-folders = sys.argv[1:] or ["results/semicircular_beam"]
-
-
-def read(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
-
-
-fig, axes = plt.subplots(2, 2, figsize=(11, 8))
-for i, folder in enumerate(folders):
-    label = os.path.basename(os.path.normpath(folder))
-    rows = read(os.path.join(folder, "semicircular_beam.csv"))
-    t = [float(r["t"]) for r in rows]
+folders = results_folders(["results/semicircular_beam"])
+fig, axes = figure_grid(2, 2, (11, 8))
+for i, (colour, label, rows, shapes) in enumerate(length_control_runs(folders, "semicircular_beam")):
+    slider_x, slider_y = column(rows, "slider_x"), column(rows, "slider_y")
     if i == 0:
-        shapes = read(os.path.join(folder, "semicircular_beam_shapes.csv"))
-        for event in sorted({int(s["event"]) for s in shapes}):
-            pts = [(float(s["x"]), float(s["y"])) for s in shapes if int(s["event"]) == event and int(s["phase"]) == 1]
-            axes[0][0].plot([p[0] for p in pts], [p[1] for p in pts], color=f"C{event % 10}", lw=0.8)
-        axes[0][0].plot([float(r["slider_x"]) for r in rows], [float(r["slider_y"]) for r in rows], "k:", lw=0.6,
-                        label=f"{label}: the mass")
-    axes[0][1].plot(t, [float(r["beam_length"]) for r in rows], color=f"C{i}", label=label)
-    axes[1][0].plot([float(r["slider_x"]) for r in rows], [float(r["slider_y"]) for r in rows], color=f"C{i}",
-                    label=label)
-    e0 = float(rows[0]["total_energy"])
-    axes[1][1].plot(t, [float(r["total_energy"]) - e0 for r in rows], color=f"C{i}", label=f"{label}: E - E0")
-    axes[1][1].plot(t, [float(r["kinetic_energy"]) for r in rows], ":", color=f"C{i}", label=f"{label}: kinetic")
+        for event in length_control_events(shapes):
+            axes[0][0].plot(*centreline(shapes, event, 1), color=f"C{event % 10}", lw=0.8)
+        axes[0][0].plot(slider_x, slider_y, "k:", lw=0.6, label=f"{label}: the mass")
+    axes[0][1].plot(column(rows, "t"), column(rows, "beam_length"), color=colour, label=label)
+    axes[1][0].plot(slider_x, slider_y, color=colour, label=label)
+    plot_total_and_kinetic_energy(axes[1][1], rows, colour, label, change=True)
 
 titles = [("(a) configurations at the length-control events", "x [m]", "y [m]"),
           ("(b) deformed length of the beam", "t [s]", "length [m]"),
           ("(c) trajectory of the sliding mass", "x [m]", "y [m]"),
           ("(d) total energy change and kinetic energy", "t [s]", "energy [J]")]
-for ax, (title, xlabel, ylabel) in zip(axes.flat, titles):
-    ax.set_title(title, fontsize=9)
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+decorate_panels(axes, titles)
 axes[0][0].set_aspect("equal")
 axes[1][0].set_aspect("equal")
-fig.tight_layout()
-out = os.path.join(folders[0], "semicircular_beam.png")
-fig.savefig(out, dpi=150)
-print(out)
+save_figure(fig, os.path.join(folders[0], "semicircular_beam.png"), 150)

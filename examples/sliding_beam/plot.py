@@ -6,37 +6,27 @@ Usage: plot.py [results/sliding_beam]   (reads sliding_beam.csv and sliding_beam
 writes sliding_beam.png)
 Needs Debian's python3-matplotlib (installed by scripts/setup.sh).
 """
-import csv
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from plotting import column, plt, read_results_csv, results_folder, save_figure  # noqa: E402
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-folder = sys.argv[1] if len(sys.argv) > 1 else "results/sliding_beam"
-with open(os.path.join(folder, "sliding_beam.csv")) as f:
-    rows = list(csv.DictReader(f))
-with open(os.path.join(folder, "sliding_beam_snapshots.csv")) as f:
-    snapshot_rows = list(csv.DictReader(f))
-
-
-def column(name):
-    return [float(r[name]) for r in rows]
-
+folder = results_folder("results/sliding_beam")
+rows = read_results_csv(folder, "sliding_beam.csv")
+snapshot_rows = read_results_csv(folder, "sliding_beam_snapshots.csv")
 
 fig = plt.figure(figsize=(13, 9))
 
 ax = fig.add_subplot(2, 2, 1)
-ax.plot(column("mass_x"), column("mass_z"), color="C0")
+ax.plot(column(rows, "mass_x"), column(rows, "mass_z"), color="C0")
 ax.set_xlabel("X [m]")
 ax.set_ylabel("Z [m]")
 ax.set_title("mass M: X-Z trajectory (003 Figure 6a)")
 ax.set_aspect("equal")
 
 ax = fig.add_subplot(2, 2, 2)
-ax.plot(column("mass_y"), column("mass_z"), color="C1")
+ax.plot(column(rows, "mass_y"), column(rows, "mass_z"), color="C1")
 ax.set_xlabel("Y [m]")
 ax.set_ylabel("Z [m]")
 ax.set_title("mass M: Y-Z trajectory (003 Figure 6b)")
@@ -57,14 +47,12 @@ ax.set_title("carrier and sliding beam every 0.1 s (003 Figure 5)")
 ax.view_init(elev=20, azim=-60)
 
 ax = fig.add_subplot(2, 2, 4)
-ax.plot(column("t"), column("zeta"), color="C2", label="zeta [m]")
-ax.plot(column("t"), column("zeta_rate"), color="C3", label="zeta rate [m/s]")
+ax.plot(column(rows, "t"), column(rows, "zeta"), color="C2", label="zeta [m]")
+ax.plot(column(rows, "t"), column(rows, "zeta_rate"), color="C3", label="zeta rate [m/s]")
 ax.axhline(10 ** 0.5, color="k", lw=0.5, ls="--", label="B (zeta = L)")
 ax.axvline(1.306, color="gray", lw=0.5, ls=":", label="003: arrival 1.306 s")
 ax.set_xlabel("t [s]")
 ax.set_title("slider along the carrier")
 ax.legend(fontsize=8)
 
-fig.tight_layout()
-fig.savefig(os.path.join(folder, "sliding_beam.png"), dpi=110)
-print("wrote", os.path.join(folder, "sliding_beam.png"))
+save_figure(fig, os.path.join(folder, "sliding_beam.png"), 110)

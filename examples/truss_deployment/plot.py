@@ -11,40 +11,35 @@ Reads, where present, the run folders case1, case2_<law> (the four laws) and cas
   truss_convergence.png  X of D with 4 and 10 elements per member, linear law (003 Figure 9)
 Needs Debian's python3-matplotlib (installed by scripts/setup.sh).
 """
-import csv
 import os
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+from plotting import column, plt, read_results_csv, results_folder  # noqa: E402
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-root = sys.argv[1] if len(sys.argv) > 1 else "results/truss_deployment"
+root = results_folder("results/truss_deployment")
 laws = ["linear", "polynomial", "cycloid", "cosine"]
 kinds = {0: ("frame rod", "tab:gray"), 1: ("cross-bar", "tab:blue"),
          2: ("side diagonal (slides)", "tab:red"), 3: ("top/bottom diagonal", "tab:green")}
 
 
 def history(folder):
-    path = os.path.join(root, folder, "truss_deployment.csv")
-    if not os.path.exists(path):
+    run = os.path.join(root, folder)
+    if not os.path.exists(os.path.join(run, "truss_deployment.csv")):
         return None
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return {name: [float(r[name]) for r in rows] for name in rows[0]}
+    rows = read_results_csv(run, "truss_deployment.csv")
+    return {name: column(rows, name) for name in rows[0]}
 
 
 def snapshots(folder):
-    path = os.path.join(root, folder, "truss_snapshots.csv")
-    if not os.path.exists(path):
+    run = os.path.join(root, folder)
+    if not os.path.exists(os.path.join(run, "truss_snapshots.csv")):
         return {}
     shapes = {}
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            member = shapes.setdefault(float(r["t"]), {}).setdefault(int(r["member"]), [int(r["kind"]), [], [], []])
-            for k, axis in enumerate("xyz"):
-                member[k + 1].append(float(r[axis]))
+    for r in read_results_csv(run, "truss_snapshots.csv"):
+        member = shapes.setdefault(float(r["t"]), {}).setdefault(int(r["member"]), [int(r["kind"]), [], [], []])
+        for k, axis in enumerate("xyz"):
+            member[k + 1].append(float(r[axis]))
     return shapes
 
 
