@@ -227,17 +227,18 @@ private:
   }
 
   /// Iterative refinement of x (P⁻¹ b on entry) against A = system_: x ← x + P⁻¹(b − A x) until
-  /// the backward error is below refined_backward_error (true), or after max_refinement_sweeps, or
-  /// when a sweep no longer halves it (false). The rows' scales are measured in the first pass
-  /// after a factorization.
+  /// the backward error reaches round-off (round_off_backward_error), or after
+  /// max_refinement_sweeps, or when a sweep no longer halves it. True when it ends below
+  /// trusted_backward_error. The rows' scales are measured in the first pass after a factorization.
   bool refined(Eigen::Ref<Eigen::VectorXd> x) {
     double previous = INFINITY;
     for (int sweep = 0;; ++sweep) {
       const double omega = residual_and_backward_error(system_, x, right_hand_side_, correction_,
                                                        magnitude_, row_scale_, row_scale_stale_);
       row_scale_stale_ = false;
-      if (omega <= refined_backward_error) return true;
-      if (sweep == max_refinement_sweeps || !(omega < 0.5 * previous)) return false;
+      if (omega <= round_off_backward_error) return true;
+      if (sweep == max_refinement_sweeps || !(omega < 0.5 * previous))
+        return omega <= trusted_backward_error;
       back_substitute(substructured_, correction_);
       x += correction_;
       previous = omega;
@@ -272,15 +273,18 @@ private:
   static constexpr int substructured_row_scaling = -1;
   /// The substructured factorization is kept when its flops are below this share of A's.
   static constexpr double substructured_flop_share = 0.5;
-  /// The backward error a refined solve must reach: four unit round-offs, what an LU of A with
-  /// partial pivoting gives at best (KLU's LU of a whole saddle-point matrix may give far less:
-  /// 2e-9 on the lattice frame of tests/solvers). On the truss unit P's solve alone leaves
-  /// 1e-15…4e-14 and one sweep 6e-17 (a back-substitution and a product with A: no measurable
-  /// time against a target of 1e-13 that needs none).
-  static constexpr double refined_backward_error = 4.0 * 2.220446049250313e-16;
+  /// The backward error the refinement aims at: four unit round-offs, what an LU of A with partial
+  /// pivoting gives at best (KLU's LU of a whole saddle-point matrix may give far less: 2e-9 on the
+  /// lattice frame of tests/solvers). On the truss unit P's solve alone leaves 1e-15…4e-14 and one
+  /// sweep 6e-17.
+  static constexpr double round_off_backward_error = 4.0 * 2.220446049250313e-16;
+  /// A refinement that stalls (a sweep no longer halves the error) is trusted below this, 450 unit
+  /// round-offs, far below what a Newton increment needs; above it the couplings P leaves out are
+  /// too strong, and the matrix is factorized as a whole.
+  static constexpr double trusted_backward_error = 1e-13;
   static constexpr int max_refinement_sweeps = 10;
   /// Substructuring is given up for the pattern after this many failures in a row (P singular or
-  /// the refinement not reaching refined_backward_error), each of which cost a factorization of P,
+  /// the refinement stalling above trusted_backward_error), each of which cost a factorization of P,
   /// the sweeps and a factorization of A.
   static constexpr int max_substructured_failures = 3;
 
