@@ -86,6 +86,12 @@ void LinearSolver::analyze(const SparseMatrix& A) {
     throw Error("substructures were given for " + std::to_string(substructures_.size()) +
                     " unknowns, the matrix has " + std::to_string(n),
                 where("analyze"), "call set_substructures again for the new system (or with {})");
+  for (std::size_t i = 0; i < substructures_.size(); ++i)
+    if (substructures_[i] < fixed_unknown)
+      throw Error("unknown " + std::to_string(i) + " has the substructure id " +
+                      std::to_string(substructures_[i]),
+                  where("analyze"),
+                  "give a substructure id ≥ 0, interface_unknown (−1) or fixed_unknown (−2)");
   if (const int rank = structural_rank(A); rank < n)
     throw Error("structurally singular iteration matrix (structural rank " +
                     std::to_string(rank) + " of " + std::to_string(n) +

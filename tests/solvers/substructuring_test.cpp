@@ -271,11 +271,15 @@ TEST_CASE("substructuring: whatever the couplings, a solve is as good as the who
   CHECK(by_substructures < 40);
 }
 
-TEST_CASE("substructuring: substructures of the wrong size are refused at analyze", "[solvers][substructuring]") {
+TEST_CASE("substructuring: substructures of the wrong size or an unknown id are refused at analyze", "[solvers][substructuring]") {
   const Frame frame = lattice_frame(2, 3, 1e-3, 0.5);
   for (LinearSolverKind kind : {LinearSolverKind::klu, LinearSolverKind::umfpack}) {
     auto solver = solvers::make_linear_solver(kind);
     solver->set_substructures(std::vector<int>(3, 0));
+    CHECK_THROWS_AS(solver->analyze(frame.A), Error);
+    std::vector<int> invalid = frame.substructure;
+    invalid[2] = -3;
+    solver->set_substructures(invalid);
     CHECK_THROWS_AS(solver->analyze(frame.A), Error);
     solver->set_substructures({});
     CHECK_NOTHROW(solver->analyze(frame.A));
