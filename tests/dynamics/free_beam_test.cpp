@@ -12,28 +12,8 @@
 
 using namespace spar;
 
-namespace {
-
-/// Steel-like beam of length 1, EI = 10, with the mass of a thin rod (ρA = 1, ρJ small).
-core::Model free_beam(int elements, int degree) {
-  core::SectionStiffness C;
-  C.axial = 1e4;
-  C.shear_2 = C.shear_3 = 5e3;
-  C.torsion = 8.0;
-  C.bending_2 = C.bending_3 = 10.0;
-  core::SectionInertia inertia;
-  inertia.mass_per_length = 1.0;
-  inertia.rotary = Eigen::Vector3d(2e-4, 1e-4, 1e-4).asDiagonal();
-  core::Model model;
-  model.add_beam({.centerline = test::straight_centerline(1.0, elements, degree), .stiffness = C,
-                  .inertia = inertia});
-  return model;
-}
-
-}  // namespace
-
 TEST_CASE("a free beam conserves energy with rho_infinity = 1", "[dynamics][validation]") {
-  core::Model model = free_beam(4, 3);
+  core::Model model = test::slender_free_beam(4, 3);
   solvers::GeneralizedAlpha integrator(model, {},
                                        {.time_step = 2.5e-4, .spectral_radius = 1.0, .tolerance = 1e-18,
                                         .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8});

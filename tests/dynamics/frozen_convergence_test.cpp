@@ -15,21 +15,6 @@ using namespace spar;
 
 namespace {
 
-/// A beam of length 1 with EI = 10 and ρA = 1 (first cantilever mode 11 rad/s), 4 cubic elements.
-core::Model slender_beam() {
-  core::SectionStiffness C;
-  C.axial = 1e4;
-  C.shear_2 = C.shear_3 = 5e3;
-  C.torsion = 8.0;
-  C.bending_2 = C.bending_3 = 10.0;
-  core::SectionInertia inertia;
-  inertia.mass_per_length = 1.0;
-  inertia.rotary = Eigen::Vector3d(2e-4, 1e-4, 1e-4).asDiagonal();
-  core::Model model;
-  model.add_beam({.centerline = test::straight_centerline(1.0, 4, 3), .stiffness = C, .inertia = inertia});
-  return model;
-}
-
 enum class Motion {
   rigid_spin,          ///< a free beam at 3 rad/s about Z through its middle: 1.5 rad in 0.5 s
   small_vibration,     ///< a cantilever in its first mode, the tip at 0.01 m/s (~1 mm)
@@ -39,7 +24,7 @@ enum class Motion {
 
 /// Newton iterations of 0.5 s at h = 1e-3 with the given strategy.
 long iterations(Motion motion, solvers::IterationMatrix strategy) {
-  core::Model model = slender_beam();
+  core::Model model = test::slender_free_beam(4, 3);
   const bool cantilever = motion == Motion::small_vibration || motion == Motion::large_vibration;
   if (cantilever) model.fix(0);
   solvers::GeneralizedAlpha integrator(model, {},

@@ -2,6 +2,7 @@
 // Beams used across the test suites: a straight beam along +X, and a quarter circle of NURBS arcs.
 #include <spar/core/beam.hpp>
 #include <spar/core/configuration.hpp>
+#include <spar/core/model.hpp>
 #include <spar/iga/knot_vector.hpp>
 #include <spar/iga/nurbs_curve.hpp>
 #include <spar/iga/straight_line.hpp>
@@ -28,6 +29,23 @@ inline core::SectionStiffness generic_stiffness() {
   C.bending_3 = 0.9;
   C.bending_23 = 0.2;
   return C;
+}
+
+/// A slender free beam of length 1 along +X with EI = 10, EA = 1e4 and the mass of a thin rod
+/// (ρA = 1, ρJ small): its first cantilever mode is at 11 rad/s.
+inline core::Model slender_free_beam(int elements, int degree) {
+  core::SectionStiffness C;
+  C.axial = 1e4;
+  C.shear_2 = C.shear_3 = 5e3;
+  C.torsion = 8.0;
+  C.bending_2 = C.bending_3 = 10.0;
+  core::SectionInertia inertia;
+  inertia.mass_per_length = 1.0;
+  inertia.rotary = Eigen::Vector3d(2e-4, 1e-4, 1e-4).asDiagonal();
+  core::Model model;
+  model.add_beam({.centerline = straight_centerline(1.0, elements, degree), .stiffness = C,
+                  .inertia = inertia});
+  return model;
 }
 
 }  // namespace spar::test
