@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Natural frequencies and mode shapes of a model linearized about its current configuration,
-/// with constraints in the null-space form (docs/dynamics.md D12).
+/// with constraints in the null-space form (docs/dynamics.md D11).
 
 #include <spar/core/model.hpp>
 #include <spar/core/sparse_assembly.hpp>
