@@ -41,8 +41,7 @@ struct SubstructuredPattern {
 };
 
 /// The substructured pattern of A for `substructure` (one entry per unknown: the substructure it
-/// belongs to, ≥ 0, interface_unknown or fixed_unknown; LinearSolver::set_substructures). Throws
-/// spar::Error when the sizes differ.
+/// belongs to, ≥ 0, interface_unknown or fixed_unknown), as LinearSolver::analyze has checked it.
 SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
                                            const std::vector<int>& substructure);
 
