@@ -67,8 +67,8 @@ private:
     double pivoting_rcond = 0.0;
     /// KLU's partial pivoting keeps the diagonal while |a_kk| ≥ this · the column's largest entry.
     double pivot_tolerance;
-    /// klu_common::scale: 2 divides each row by its largest entry before pivoting; −1 does not
-    /// scale (and skips KLU's pass over the matrix at every refactorization).
+    /// klu_common::scale of the pivoting factorization: 2 divides each row by its largest entry
+    /// for the choice of pivots; −1 does not scale. Refactorizations never scale (factorize_with).
     int row_scaling;
   };
 
@@ -195,18 +195,20 @@ private:
   /// Refactorizes with the kept pivot order; factorizes with pivoting when there is none, a pivot
   /// has become zero, or the pivot ratio has fallen by more than refactor_rcond_drop against the
   /// last pivoting factorization (that order is then no longer stable).
+  ///
+  /// The pivot order is chosen on the row-scaled matrix (f.row_scaling), but every factorization
+  /// kept for solving is unscaled: with the permutations fixed, the LU of R A (R diagonal) is R
+  /// times that of A's rows, so scaling changes the factors by rounding only, while KLU's pass that
+  /// computes R and divides every entry by it was 6 % of a slider-crank run in `update`. A pivoting
+  /// factorization is therefore followed by an unscaled refactorization of the same matrix, which
+  /// also gives the pivot ratio the later, unscaled refactorizations are compared with.
   FactorizationOutcome factorize_with(const Columns& M, Factorization& f) {
-    common_.scale = f.row_scaling;
     if (f.numeric) {
-      const bool refactored =
-          klu_refactor(M.starts, M.rows, M.values, f.symbolic.get(), f.numeric.get(), &common_) != 0;
-      if (!refactored && common_.status != KLU_SINGULAR)
-        throw_library_failure("klu_refactor", common_.status);
-      if (refactored && klu_rcond(f.symbolic.get(), f.numeric.get(), &common_) &&
-          common_.rcond >= refactor_rcond_drop * f.pivoting_rcond)
+      if (refactor_unscaled(M, f) && common_.rcond >= refactor_rcond_drop * f.pivoting_rcond)
         return FactorizationOutcome::succeeded;
       f.numeric.reset();
     }
+    common_.scale = f.row_scaling;
     common_.tol = f.pivot_tolerance;
     f.numeric.reset(klu_factor(M.starts, M.rows, M.values, f.symbolic.get(), &common_));
     if (common_.status == KLU_SINGULAR) {
@@ -214,10 +216,28 @@ private:
       return FactorizationOutcome::singular;
     }
     if (!f.numeric) throw_library_failure("klu_factor", common_.status);
-    if (!klu_rcond(f.symbolic.get(), f.numeric.get(), &common_))
-      throw_library_failure("klu_rcond", common_.status);
+    if (f.row_scaling == unscaled) {
+      if (!klu_rcond(f.symbolic.get(), f.numeric.get(), &common_))
+        throw_library_failure("klu_rcond", common_.status);
+    } else if (!refactor_unscaled(M, f)) {  // a pivot that scaling kept above zero underflowed
+      f.numeric.reset();
+      return FactorizationOutcome::singular;
+    }
     f.pivoting_rcond = common_.rcond;
     return FactorizationOutcome::succeeded;
+  }
+
+  /// klu_refactor without row scaling, then its pivot ratio into common_.rcond; false when a
+  /// pivot is zero.
+  bool refactor_unscaled(const Columns& M, Factorization& f) {
+    common_.scale = unscaled;
+    if (!klu_refactor(M.starts, M.rows, M.values, f.symbolic.get(), f.numeric.get(), &common_)) {
+      if (common_.status != KLU_SINGULAR) throw_library_failure("klu_refactor", common_.status);
+      return false;
+    }
+    if (!klu_rcond(f.symbolic.get(), f.numeric.get(), &common_))
+      throw_library_failure("klu_rcond", common_.status);
+    return true;
   }
 
   void back_substitute(Factorization& f, Eigen::Ref<Eigen::VectorXd> b) {
@@ -264,13 +284,16 @@ private:
   /// (2.1 against 1.3 Mflop, frame 0 still in P). The refinement against A and the pivot-ratio
   /// test of every refactorization guard the accuracy.
   static constexpr double substructured_pivot_tolerance = 1e-6;
-  /// KLU's default row scaling for A as a whole (each row by its largest entry).
+  /// klu_common::scale: no scaling (and no check of the matrix, which the pattern guarantees).
+  static constexpr int unscaled = -1;
+  /// KLU's default row scaling for A as a whole (each row by its largest entry), for the pivot
+  /// choice only (factorize_with).
   static constexpr int whole_row_scaling = 2;
   /// P unscaled: KLU's scaling pass over the matrix at every refactorization was 5 % of the truss
   /// unit's run; unscaled, the run takes 8 % less with the same iterates (its pivot choices may
   /// differ from a scaled P's; the refinement against A and the pivot-ratio test of every
   /// refactorization hold the accuracy either way).
-  static constexpr int substructured_row_scaling = -1;
+  static constexpr int substructured_row_scaling = unscaled;
   /// The substructured factorization is kept when its flops are below this share of A's.
   static constexpr double substructured_flop_share = 0.5;
   /// The backward error the refinement aims at: four unit round-offs, what an LU of A with partial
