@@ -31,6 +31,7 @@ constexpr int z_x_prime = 0, z_a = 1, z_theta = 2, z_theta_prime = 3;
 
 /// Kinematics of one Gauss point (003 eqs. 41–42).
 struct PointKinematics {
+  lie::TangentCoefficients<double> coefficients;  // of exp, T and T's derivatives at Θ
   lie::ExpAndTangent<double> exp_tangent;  // E = exp(Θ), T = T(Θ)
   Matrix3 rotation;                        // R = R_r E
   Vector3 v;                               // R_rᵀ x′
@@ -42,7 +43,8 @@ struct PointKinematics {
 PointKinematics kinematics(const detail::RelativeRotations& rel,
                            const detail::InterpolatedFields& f) {
   PointKinematics k;
-  k.exp_tangent = lie::exp_and_tangent(f.theta);
+  k.coefficients = lie::tangent_coefficients(f.theta);
+  k.exp_tangent = lie::exp_and_tangent(f.theta, k.coefficients);
   k.rotation = rel.reference * k.exp_tangent.rotation;
   k.v = rel.reference.transpose() * f.x_prime;
   k.w = k.exp_tangent.rotation.transpose() * k.v;
@@ -116,11 +118,11 @@ Matrix12 geometric_stiffness(const PointKinematics& k, const detail::Interpolate
   G.block<3, 3>(3 * z_a, 3 * z_a) = aa;
   G.block<3, 3>(3 * z_a, 3 * z_theta) = lie::hat(k.v) * E * hat_n_T;
   G.block<3, 3>(3 * z_theta, 3 * z_theta) =
-      lie::tangent_transpose_derivative(f.theta, n.cross(k.w)) +
+      lie::tangent_transpose_derivative(f.theta, n.cross(k.w), k.coefficients) +
       T.transpose() * lie::hat(n) * lie::hat(k.w) * T +
       // mᵀκ = mᵀ T(Θ) Θ′ (B7).
-      lie::tangent_hessian(f.theta, m, f.theta_prime);
-  G.block<3, 3>(3 * z_theta_prime, 3 * z_theta) = lie::tangent_transpose_derivative(f.theta, m);
+      lie::tangent_hessian(f.theta, m, f.theta_prime, k.coefficients);
+  G.block<3, 3>(3 * z_theta_prime, 3 * z_theta) = lie::tangent_transpose_derivative(f.theta, m, k.coefficients);
   // Mirror the upper blocks.
   G.block<3, 3>(3 * z_a, 3 * z_x_prime) = G.block<3, 3>(3 * z_x_prime, 3 * z_a).transpose();
   G.block<3, 3>(3 * z_theta, 3 * z_x_prime) =
@@ -204,10 +206,10 @@ void evaluate_element(const GeometricallyExactBeam& beam, int e, const Configura
     if (!with_force) continue;
 
     // (∂κ/∂Θ)ᵀ m from the derivative where the stiffness needs it anyway, else directly.
-    if (with_stiffness) kin.kappa_derivative = lie::tangent_derivative(f.theta, f.theta_prime);
-    const Vector3 curvature_gradient = with_stiffness
-                                           ? Vector3(kin.kappa_derivative.transpose() * stress.tail<3>())
-                                           : lie::tangent_gradient(f.theta, stress.tail<3>(), f.theta_prime);
+    if (with_stiffness) kin.kappa_derivative = lie::tangent_derivative(f.theta, f.theta_prime, kin.coefficients);
+    const Vector3 curvature_gradient =
+        with_stiffness ? Vector3(kin.kappa_derivative.transpose() * stress.tail<3>())
+                       : lie::tangent_gradient(f.theta, stress.tail<3>(), f.theta_prime, kin.coefficients);
     const Vector12 g_z =
         gp.weight * strain_operator_transpose_times(kin, stress.head<3>(), stress.tail<3>(), curvature_gradient);
     // g_y += Lᵀ g_z for the linear map z ← y of B9: x′ = Σ N_I′ x_I, a, Θ = Σ N_I ψ_I, Θ′ = Σ N_I′ ψ_I.
