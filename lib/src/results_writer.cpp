@@ -68,6 +68,14 @@ struct Series {
     return result;
   }
   void push(const double* values, std::size_t count) { buffer.insert(buffer.end(), values, values + count); }
+  /// Appends `values` row by row (the datasets are row-major, Eigen's matrices column-major),
+  /// without a temporary.
+  void push_rows(const Eigen::MatrixXd& values) {
+    const std::size_t at = buffer.size();
+    buffer.resize(at + static_cast<std::size_t>(values.size()));
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(buffer.data() + at, values.rows(),
+                                                                                      values.cols()) = values;
+  }
 };
 
 /// Steps per chunk: one block (flush_every steps), capped at about 64 KiB per chunk, so a block
@@ -458,8 +466,14 @@ struct ResultsWriter::Impl {
   }
 
   /// Starts the writer thread (the constructor, once the file and the sidecar exist).
+  /// Both blocks' buffers are reserved whole, so append never reallocates.
   void start_writer() {
     block.rows.resize(series.size());
+    for (std::size_t k = 0; k < series.size(); ++k) {
+      const auto values = static_cast<std::size_t>(flush_every) * series[k].values_per_step();
+      series[k].buffer.reserve(values);
+      block.rows[k].reserve(values);
+    }
     worker = std::thread([this] { run_writer(); });
   }
 
@@ -705,16 +719,12 @@ struct ResultsWriter::Impl {
       series[static_cast<std::size_t>(first_scalar) + i].push(&step.scalars[i], 1);
     for (std::size_t i = 0; i < step.probes.size(); ++i)
       series[static_cast<std::size_t>(first_probe) + i].push(step.probes[i].data(), 3);
-    for (std::size_t k = 0; k < step.centerlines.size(); ++k) {
-      const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rows = step.centerlines[k];
-      series[static_cast<std::size_t>(first_centerline) + k].push(rows.data(), static_cast<std::size_t>(rows.size()));
-    }
+    for (std::size_t k = 0; k < step.centerlines.size(); ++k)
+      series[static_cast<std::size_t>(first_centerline) + k].push_rows(step.centerlines[k]);
     for (std::size_t k = 0; k < step.centerline_fields.size(); ++k)
-      for (std::size_t f = 0; f < step.centerline_fields[k].size(); ++f) {
-        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = step.centerline_fields[k][f];
-        series[static_cast<std::size_t>(first_field) + f * step.centerline_fields.size() + k].push(
-            rows.data(), static_cast<std::size_t>(rows.size()));
-      }
+      for (std::size_t f = 0; f < step.centerline_fields[k].size(); ++f)
+        series[static_cast<std::size_t>(first_field) + f * step.centerline_fields.size() + k].push_rows(
+            step.centerline_fields[k][f]);
     buffer_shapes(step);
     last_time = step.time;
   }
