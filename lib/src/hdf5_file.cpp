@@ -2,9 +2,11 @@
 #include <spar/error.hpp>
 
 #include "hdf5_attributes.hpp"
+#include "hdf5_lock.hpp"
 
 #include <hdf5.h>
 
+#include <mutex>
 #include <vector>
 
 namespace spar::core {
@@ -20,15 +22,20 @@ void check(herr_t status, const std::string& what, const std::string& path) {
 }  // namespace
 
 Hdf5File::Hdf5File(const std::string& path) : path_(path) {
+  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
   file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   check(static_cast<herr_t>(file_ < 0 ? -1 : 0), "create the file", path);
 }
 
-Hdf5File::~Hdf5File() { H5Fclose(static_cast<hid_t>(file_)); }
+Hdf5File::~Hdf5File() {
+  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+  H5Fclose(static_cast<hid_t>(file_));
+}
 
 void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
                      const std::string& description) {
+  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
   const hid_t file = static_cast<hid_t>(file_);
   const hid_t link_properties = H5Pcreate(H5P_LINK_CREATE);
   H5Pset_create_intermediate_group(link_properties, 1);
@@ -47,11 +54,13 @@ void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data, const
 }
 
 void Hdf5File::write_attribute(const std::string& name, double value) {
+  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
   check(detail::write_scalar_attribute(static_cast<hid_t>(file_), name, H5T_NATIVE_DOUBLE, &value),
         "write attribute " + name, path_);
 }
 
 void Hdf5File::write_attribute(const std::string& name, const std::string& value) {
+  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
   check(detail::write_string_attribute(static_cast<hid_t>(file_), name, value), "write attribute " + name, path_);
 }
 

@@ -1,6 +1,7 @@
 #include <spar/core/results_writer.hpp>
 
 #include "hdf5_attributes.hpp"
+#include "hdf5_lock.hpp"
 #include "xdmf_sidecar.hpp"
 
 #include <spar/error.hpp>
@@ -14,11 +15,14 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <limits>
+#include <mutex>
 #include <set>
+#include <thread>
 #include <utility>
 
 namespace spar::core {
@@ -50,7 +54,7 @@ struct Series {
   std::vector<hsize_t> shape;  ///< per-step shape, {} for one scalar per step
   bool integer = false;        ///< stored as int32 (counters), else as doubles
   hid_t dataset = H5I_INVALID_HID;
-  std::vector<double> buffer;  ///< steps not yet written, row-major
+  std::vector<double> buffer;  ///< steps not yet handed to the writer thread, row-major
 
   hsize_t values_per_step() const {
     hsize_t count = 1;
@@ -64,6 +68,14 @@ struct Series {
     return result;
   }
   void push(const double* values, std::size_t count) { buffer.insert(buffer.end(), values, values + count); }
+  /// Appends `values` row by row (the datasets are row-major, Eigen's matrices column-major),
+  /// without a temporary.
+  void push_rows(const Eigen::MatrixXd& values) {
+    const std::size_t at = buffer.size();
+    buffer.resize(at + static_cast<std::size_t>(values.size()));
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(buffer.data() + at, values.rows(),
+                                                                                      values.cols()) = values;
+  }
 };
 
 /// Steps per chunk: one block (flush_every steps), capped at about 64 KiB per chunk, so a block
@@ -208,9 +220,28 @@ struct ResultsWriter::Impl {
   /// length takes the model's extent.
   std::vector<Eigen::Matrix3Xd> shape_corners;
   double last_time = 0;        ///< the last appended step's time
-  std::unique_ptr<detail::XdmfSidecar> sidecar;
+  std::unique_ptr<detail::XdmfSidecar> sidecar;  ///< used by the writer thread only, once it runs
   int appended = 0;
-  int flushed = 0;
+  int handed = 0;              ///< steps handed to the writer thread (the next block's first row)
+
+  // ---- the writer thread (one for the writer's lifetime) and what it shares with the caller ----
+
+  /// A block of steps handed to the writer thread: the rows of every series and where they go.
+  struct Block {
+    int first = 0;                          ///< the row of its first step
+    int count = 0;                          ///< its steps
+    std::vector<std::vector<double>> rows;  ///< per series, `count` steps row-major (series[k].buffer's layout)
+  };
+  /// The block in flight. The caller fills it only while `queued` is false (the writer thread is
+  /// idle); the writer thread reads it only while `queued` is true.
+  Block block;
+  std::thread worker;
+  mutable std::mutex mutex;                  ///< guards queued, stopping, failure and flushed
+  mutable std::condition_variable changed;   ///< signals a block handed over, a block done, a stop
+  bool queued = false;                       ///< `block` holds steps the writer thread has not finished
+  bool stopping = false;                     ///< the writer thread returns once `block` is done
+  std::exception_ptr failure;                ///< the writer thread's error, not yet rethrown to the caller
+  int flushed = 0;                           ///< steps on disk: written, H5Fflush-ed and in the sidecar
 
   std::string where(const std::string& function) const { return "core::ResultsWriter::" + function + "(" + path + ")"; }
 
@@ -223,6 +254,17 @@ struct ResultsWriter::Impl {
   void require_open(const std::string& function) const {
     if (file < 0)
       throw Error("the results file is closed", where(function), "call " + function + " before close()");
+  }
+
+  /// Runs `write(file)`, which writes the root group's attribute `name`, with the writer thread
+  /// idle, and flushes the file.
+  template <class Write>
+  void write_attribute(const std::string& name, Write write) {
+    require_open("write_attribute");
+    wait_idle();
+    const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+    check(write(file), "write attribute " + name, "write_attribute");
+    check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
   }
 
   /// Adds a series of `shape` per step and returns its index.
@@ -362,12 +404,12 @@ struct ResultsWriter::Impl {
                  "point indices 0 ... n-1 of the nodes' point cloud in the XDMF sidecar");
   }
 
-  /// Appends the buffered steps to every dataset.
-  void write_block() {
-    const auto start = static_cast<hsize_t>(flushed);
-    const auto count = static_cast<hsize_t>(appended - flushed);
-    if (count == 0) return;
-    for (Series& s : series) {
+  /// Appends the steps of `b` to every dataset (writer thread, holding the HDF5 lock).
+  void write_block(const Block& b) {
+    const auto start = static_cast<hsize_t>(b.first);
+    const auto count = static_cast<hsize_t>(b.count);
+    for (std::size_t k = 0; k < series.size(); ++k) {
+      const Series& s = series[k];
       const std::vector<hsize_t> total = s.dims(start + count), rows = s.dims(count);
       std::vector<hsize_t> offset(total.size(), 0);
       offset[0] = start;
@@ -376,16 +418,129 @@ struct ResultsWriter::Impl {
       const Hid memory_space(H5Screate_simple(static_cast<int>(rows.size()), rows.data(), nullptr), H5Sclose);
       check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, offset.data(), nullptr, rows.data(), nullptr),
             "select the new rows of " + s.name, "flush");
-      check(H5Dwrite(s.dataset, H5T_NATIVE_DOUBLE, memory_space, file_space, H5P_DEFAULT, s.buffer.data()),
+      check(H5Dwrite(s.dataset, H5T_NATIVE_DOUBLE, memory_space, file_space, H5P_DEFAULT, b.rows[k].data()),
             "write dataset " + s.name, "flush");
-      s.buffer.clear();
     }
-    flushed = appended;
   }
 
-  /// Closes every dataset, the file and the sidecar; returns false if HDF5 reported a failure.
+  /// The writer thread's job for one block: its rows, H5Fflush, then its steps in the sidecar
+  /// (series 0 holds their times), so both files are complete up to the block when it returns.
+  void write_and_flush(const Block& b) {
+    {
+      const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+      write_block(b);
+      check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "flush");
+    }
+    sidecar->append(b.first, b.rows[0], b.first + b.count);
+  }
+
+  /// The writer thread: writes each block handed over, in order, until told to stop. After an
+  /// error it keeps the error for the caller and writes nothing more (no HDF5 call).
+  void run_writer() {
+    {
+      const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+      H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // the error stack is per thread in a thread-safe HDF5
+    }
+    std::unique_lock<std::mutex> lock(mutex);
+    while (true) {
+      changed.wait(lock, [this] { return queued || stopping; });
+      if (!queued) return;
+      if (!failure) {
+        lock.unlock();
+        std::exception_ptr error;
+        try {
+          write_and_flush(block);
+        } catch (...) {
+          error = std::current_exception();
+        }
+        lock.lock();
+        if (error)
+          failure = error;
+        else
+          flushed = block.first + block.count;
+      }
+      for (std::vector<double>& rows : block.rows) rows.clear();  // keeps their capacity for the next swap
+      queued = false;
+      changed.notify_all();
+    }
+  }
+
+  /// Starts the writer thread (the constructor, once the file and the sidecar exist).
+  /// Both blocks' buffers are reserved whole, so append never reallocates.
+  void start_writer() {
+    block.rows.resize(series.size());
+    for (std::size_t k = 0; k < series.size(); ++k) {
+      const auto values = static_cast<std::size_t>(flush_every) * series[k].values_per_step();
+      series[k].buffer.reserve(values);
+      block.rows[k].reserve(values);
+    }
+    worker = std::thread([this] { run_writer(); });
+  }
+
+  /// Hands the buffered steps to the writer thread as one block, once it has finished the
+  /// previous one: the filled buffers and the written block's (emptied) storage swap, so a step
+  /// is copied once and, in steady state, nothing is allocated. Rethrows an earlier error of the
+  /// writer thread instead (see wait_idle).
+  void hand_over() {
+    if (appended == handed) return;
+    wait_idle();
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      block.first = handed;
+      block.count = appended - handed;
+      for (std::size_t k = 0; k < series.size(); ++k) std::swap(block.rows[k], series[k].buffer);
+      queued = true;
+    }
+    changed.notify_all();
+    handed = appended;
+  }
+
+  /// Waits until the writer thread has written every block handed to it (it is then idle: the
+  /// caller may make HDF5 calls). If it met an error, closes the file and rethrows the error.
+  void wait_idle() {
+    std::exception_ptr error;
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      changed.wait(lock, [this] { return !queued; });
+      error = std::exchange(failure, nullptr);
+    }
+    if (error) {
+      release();
+      std::rethrow_exception(error);
+    }
+  }
+
+  /// Rethrows, after closing the file, an error the writer thread has met so far, without
+  /// waiting for the block in flight.
+  void report_failure() {
+    std::exception_ptr error;
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      error = std::exchange(failure, nullptr);
+    }
+    if (error) {
+      release();
+      std::rethrow_exception(error);
+    }
+  }
+
+  /// Stops and joins the writer thread once it has written what was handed to it.
+  void stop_writer() {
+    if (!worker.joinable()) return;
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      stopping = true;
+    }
+    changed.notify_all();
+    worker.join();
+  }
+
+  /// Stops the writer thread, then closes every dataset, the file and the sidecar; returns false
+  /// if HDF5 reported a failure.
   bool release() {
+    stop_writer();
     sidecar.reset();
+    const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
     bool ok = true;
     for (Series& s : series)
       if (s.dataset >= 0) {
@@ -564,16 +719,12 @@ struct ResultsWriter::Impl {
       series[static_cast<std::size_t>(first_scalar) + i].push(&step.scalars[i], 1);
     for (std::size_t i = 0; i < step.probes.size(); ++i)
       series[static_cast<std::size_t>(first_probe) + i].push(step.probes[i].data(), 3);
-    for (std::size_t k = 0; k < step.centerlines.size(); ++k) {
-      const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rows = step.centerlines[k];
-      series[static_cast<std::size_t>(first_centerline) + k].push(rows.data(), static_cast<std::size_t>(rows.size()));
-    }
+    for (std::size_t k = 0; k < step.centerlines.size(); ++k)
+      series[static_cast<std::size_t>(first_centerline) + k].push_rows(step.centerlines[k]);
     for (std::size_t k = 0; k < step.centerline_fields.size(); ++k)
-      for (std::size_t f = 0; f < step.centerline_fields[k].size(); ++f) {
-        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = step.centerline_fields[k][f];
-        series[static_cast<std::size_t>(first_field) + f * step.centerline_fields.size() + k].push(
-            rows.data(), static_cast<std::size_t>(rows.size()));
-      }
+      for (std::size_t f = 0; f < step.centerline_fields[k].size(); ++f)
+        series[static_cast<std::size_t>(first_field) + f * step.centerline_fields.size() + k].push_rows(
+            step.centerline_fields[k][f]);
     buffer_shapes(step);
     last_time = step.time;
   }
@@ -588,16 +739,20 @@ ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, i
   impl.layout = std::move(layout);
   impl.flush_every = flush_every;
   impl.plan_series();
+  std::unique_lock<std::mutex> hdf5(detail::hdf5_mutex());
   impl.create_file();
   try {
     for (Series& s : impl.series) impl.create_dataset(s);
     impl.write_topologies();
     impl.check(detail::write_string_attribute(impl.file, "schema", "spar.results/2"), "write attribute schema",
                "ResultsWriter");
+    impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "ResultsWriter");
+    hdf5.unlock();
     impl.sidecar = std::make_unique<detail::XdmfSidecar>(
         impl.xdmf_path, std::filesystem::path(h5_path).filename().string(), impl.layout);
-    flush();
+    impl.start_writer();
   } catch (...) {
+    if (hdf5.owns_lock()) hdf5.unlock();  // release() takes it
     impl.release();
     throw;
   }
@@ -621,29 +776,27 @@ ResultsWriter& ResultsWriter::operator=(ResultsWriter&& other) noexcept {
 }
 
 void ResultsWriter::write_attribute(const std::string& name, double value) {
-  impl_->require_open("write_attribute");
-  impl_->check(detail::write_scalar_attribute(impl_->file, name, H5T_NATIVE_DOUBLE, &value), "write attribute " + name,
-               "write_attribute");
-  impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
+  impl_->write_attribute(name, [&](hid_t file) {
+    return detail::write_scalar_attribute(file, name, H5T_NATIVE_DOUBLE, &value);
+  });
 }
 
 void ResultsWriter::write_attribute(const std::string& name, std::int64_t value) {
-  impl_->require_open("write_attribute");
-  impl_->check(detail::write_scalar_attribute(impl_->file, name, H5T_NATIVE_INT64, &value), "write attribute " + name,
-               "write_attribute");
-  impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
+  impl_->write_attribute(name, [&](hid_t file) {
+    return detail::write_scalar_attribute(file, name, H5T_NATIVE_INT64, &value);
+  });
 }
 
 void ResultsWriter::write_attribute(const std::string& name, const std::string& value) {
-  impl_->require_open("write_attribute");
-  impl_->check(detail::write_string_attribute(impl_->file, name, value), "write attribute " + name, "write_attribute");
-  impl_->check(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
+  impl_->write_attribute(name, [&](hid_t file) { return detail::write_string_attribute(file, name, value); });
 }
 
 void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
                                    const std::string& description) {
   Impl& impl = *impl_;
   impl.require_open("write_constant");
+  impl.wait_idle();
+  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
   if (H5Lexists(impl.file, name.c_str(), H5P_DEFAULT) > 0)
     throw Error("the file already holds an object named " + name, impl.where("write_constant"),
                 "write each constant once, under a name not used by the time histories (docs/output.md)");
@@ -661,21 +814,19 @@ void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixX
 void ResultsWriter::append(const ResultsStep& step) {
   Impl& impl = *impl_;
   impl.require_open("append");
+  impl.report_failure();
   impl.check_step(step);
   impl.place_shapes(step);
   impl.buffer_step(step);
   ++impl.appended;
-  if (impl.appended - impl.flushed >= impl.flush_every) flush();
+  if (impl.appended - impl.handed >= impl.flush_every) impl.hand_over();
 }
 
 void ResultsWriter::flush() {
   Impl& impl = *impl_;
   impl.require_open("flush");
-  const int first = impl.flushed;
-  const std::vector<double> times = impl.series[0].buffer;  // the buffered steps' times
-  impl.write_block();
-  impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "flush");
-  impl.sidecar->append(first, times, impl.flushed);
+  impl.hand_over();
+  impl.wait_idle();
 }
 
 void ResultsWriter::close() {
@@ -686,14 +837,18 @@ void ResultsWriter::close() {
   } catch (...) {
     failure = std::current_exception();
   }
-  const bool released = impl_->release();
+  const bool released = impl_->file < 0 || impl_->release();  // a writer-thread error released it already
   if (failure) std::rethrow_exception(failure);
   impl_->check(released ? 0 : -1, "close the file", "close");
 }
 
 int ResultsWriter::steps_written() const { return impl_->appended; }
 
-int ResultsWriter::steps_flushed() const { return impl_->flushed; }
+int ResultsWriter::steps_flushed() const {
+  std::unique_lock<std::mutex> lock(impl_->mutex);
+  impl_->changed.wait(lock, [this] { return !impl_->queued; });
+  return impl_->flushed;
+}
 
 const std::string& ResultsWriter::xdmf_path() const { return impl_->xdmf_path; }
 

@@ -77,6 +77,7 @@ TEST_CASE("The XDMF sidecar is well-formed XML and describes every flushed step"
 
   const int flushed = GENERATE(3, 4);
   if (flushed == 4) writer.flush();
+  REQUIRE(writer.steps_flushed() == flushed);  // waits for the writer thread (results_writer.hpp)
   const XmlElement root = spar::test::XmlReader::parse(spar::test::read_text(writer.xdmf_path()));
   REQUIRE(root.name == "Xdmf");
   const XmlElement& series = root.one("Domain").one("Grid");

@@ -4,7 +4,9 @@
 /// per step) and an XDMF sidecar that lets ParaView play the deforming beams as an animation.
 /// Steps are buffered and written in blocks, each followed by H5Fflush and an append of the
 /// block's steps to the sidecar, so a run that dies keeps every step up to its last flush and
-/// both files still open; a flush costs the same at step 100 and at step 10⁶.
+/// both files still open; a flush costs the same at step 100 and at step 10⁶. The blocks are
+/// written on a thread of the writer's own (see ResultsWriter), so the run does not wait for
+/// the disk.
 /// The schema (dataset names, shapes, units) is in docs/output.md, "Time histories".
 
 #include <spar/core/configuration.hpp>
@@ -104,6 +106,18 @@ struct ResultsStep {
 /// Writes a run's time histories into `<name>.h5` and its XDMF sidecar `<name>.xmf`.
 /// The file is not locked (HDF5 file locking is off), so it can be read while the run goes on:
 /// after each flush both files are complete up to the flushed step.
+///
+/// Threading: the constructor starts one writer thread, which lives until close() or the
+/// destructor joins it. append() copies the step into the buffers of the block being filled; a
+/// full block is handed to the writer thread, which writes it, H5Fflush-es and appends it to the
+/// sidecar while the caller fills the next one (two blocks in memory at most: append waits only
+/// if the writer thread is still writing the previous block). After the constructor every HDF5
+/// call of the writer is made on its thread, or on the caller's with the writer thread idle
+/// (write_attribute, write_constant, close), under the library's HDF5 lock (HDF5 is not assumed
+/// thread-safe: two writers may run side by side). An error of the writer thread (a full disk,
+/// an HDF5 failure) is rethrown as its spar::Error by the next append, flush, close or write_*
+/// call, which closes the file first: the writer then writes nothing more. A ResultsWriter is
+/// used from one thread at a time, like any object without a lock.
 class ResultsWriter {
 public:
   /// Creates (truncates) the HDF5 file and every dataset of `layout` with zero steps, and writes
@@ -130,16 +144,19 @@ public:
   void write_constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
                       const std::string& description);
   /// Buffers one step after checking it against the layout (spar::Error naming the field and the
-  /// expected size) and that time increases; writes the block when flush_every steps are buffered.
+  /// expected size) and that time increases; hands the block to the writer thread when
+  /// flush_every steps are buffered (waiting for it if it is still writing the previous block).
   void append(const ResultsStep& step);
-  /// Writes the buffered steps, H5Fflush-es the file and appends them to the sidecar, so both
-  /// are readable now with every appended step.
+  /// Writes the buffered steps, H5Fflush-es the file and appends them to the sidecar, and waits
+  /// for the writer thread to finish, so both are readable now with every appended step.
   void flush();
-  /// Flushes and closes the file; later calls do nothing, append/write_* then throw.
+  /// Flushes, joins the writer thread and closes the file; later calls do nothing, append/write_*
+  /// then throw.
   void close();
   /// Steps appended so far (written or still buffered).
   int steps_written() const;
-  /// Steps on disk (as of the last flush).
+  /// Steps on disk (written, H5Fflush-ed and in the sidecar): waits for the writer thread to
+  /// finish the blocks handed to it, so call it between blocks, not at every step.
   int steps_flushed() const;
   /// The sidecar's path: the HDF5 path with its extension replaced by `.xmf`.
   const std::string& xdmf_path() const;
