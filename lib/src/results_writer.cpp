@@ -495,19 +495,18 @@ struct ResultsWriter::Impl {
     handed = appended;
   }
 
-  /// Waits until the writer thread has written every block handed to it (it is then idle: the
-  /// caller may make HDF5 calls). If it met an error, closes the file and rethrows the error.
+  /// Waits until the writer thread has finished every block handed to it (it is then idle: the
+  /// caller may make HDF5 calls); returns the steps on disk.
+  int await_writer() const {
+    std::unique_lock<std::mutex> lock(mutex);
+    changed.wait(lock, [this] { return !queued; });
+    return flushed;
+  }
+
+  /// await_writer, then: if the writer thread met an error, closes the file and rethrows it.
   void wait_idle() {
-    std::exception_ptr error;
-    {
-      std::unique_lock<std::mutex> lock(mutex);
-      changed.wait(lock, [this] { return !queued; });
-      error = std::exchange(failure, nullptr);
-    }
-    if (error) {
-      release();
-      std::rethrow_exception(error);
-    }
+    await_writer();
+    report_failure();
   }
 
   /// Rethrows, after closing the file, an error the writer thread has met so far, without
@@ -844,11 +843,7 @@ void ResultsWriter::close() {
 
 int ResultsWriter::steps_written() const { return impl_->appended; }
 
-int ResultsWriter::steps_flushed() const {
-  std::unique_lock<std::mutex> lock(impl_->mutex);
-  impl_->changed.wait(lock, [this] { return !impl_->queued; });
-  return impl_->flushed;
-}
+int ResultsWriter::steps_flushed() const { return impl_->await_writer(); }
 
 const std::string& ResultsWriter::xdmf_path() const { return impl_->xdmf_path; }
 
