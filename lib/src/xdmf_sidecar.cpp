@@ -66,9 +66,8 @@ constexpr char step_placeholder = '\x01', time_placeholder = '\x02', rows_placeh
 
 }  // namespace
 
-XdmfSidecar::XdmfSidecar(std::string xmf_path, const std::string& h5_name, ResultsLayout layout)
-    : path_(std::move(xmf_path)), h5_name_(xml_escape(h5_name)), layout_(std::move(layout)) {
-  const std::string where = "core::ResultsWriter, XDMF sidecar " + path_;
+void XdmfSidecar::check_names(const std::string& xmf_path, const std::string& h5_name, const ResultsLayout& layout) {
+  const std::string where = "core::ResultsWriter, XDMF sidecar " + xmf_path;
   if (h5_name.find_first_of(":|") != std::string::npos)
     throw Error("the results file's name " + h5_name + " contains ':' or '|', which XDMF references reserve", where,
                 "name the results file without ':' and '|'");
@@ -76,10 +75,16 @@ XdmfSidecar::XdmfSidecar(std::string xmf_path, const std::string& h5_name, Resul
     return std::any_of(text.begin(), text.end(), [](char c) { return c >= 0 && c < ' ' && c != '\t'; });
   };
   bool control = has_control_character(h5_name);
-  for (const CenterlineField& field : layout_.centerline_fields) control = control || has_control_character(field.name);
+  for (const CenterlineField& field : layout.centerline_fields) control = control || has_control_character(field.name);
   if (control)
     throw Error("the results file's name or a centerline field's name contains a control character, which XML 1.0 "
                 "does not allow", where, "use printable characters in names");
+}
+
+XdmfSidecar::XdmfSidecar(std::string xmf_path, const std::string& h5_name, ResultsLayout layout)
+    : path_(std::move(xmf_path)), h5_name_(xml_escape(h5_name)), layout_(std::move(layout)) {
+  check_names(path_, h5_name, layout_);
+  const std::string where = "core::ResultsWriter, XDMF sidecar " + path_;
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0)
     throw Error(std::string("cannot create the sidecar: ") + std::strerror(errno), where,

@@ -262,6 +262,12 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
     CHECK_THROWS_AS(ResultsWriter(path, layout), spar::Error);
     CHECK_THROWS_WITH(ResultsWriter(path, layout), Contains(path) && Contains("does not exist"));
   }
+  SECTION("a path that is a folder") {
+    // The writer thread makes the file; the constructor still refuses a path it could not write.
+    const std::string path = folder.file("run.h5");
+    std::filesystem::create_directory(path);
+    CHECK_THROWS_WITH(ResultsWriter(path, layout), Contains("cannot create the results file " + path + ": it is a folder"));
+  }
   SECTION("layout") {
     layout.centerline_points[0] = 1;
     CHECK_THROWS_WITH(ResultsWriter(folder.file("a.h5"), layout), Contains("layout.centerline_points[0] = 1"));
@@ -309,6 +315,10 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
   SECTION("names taken and a closed file") {
     ResultsWriter writer(folder.file("run.h5"), layout);
     CHECK_THROWS_WITH(writer.write_constant("time", Eigen::MatrixXd::Zero(1, 1), "s", "t"), Contains("already holds an object named time"));
+    // Attributes are written by the writer thread; a name HDF5 would refuse is refused at the call.
+    CHECK_THROWS_WITH(writer.write_attribute("", 1.0), Contains("the attribute name has 0 characters"));
+    CHECK_THROWS_WITH(writer.write_attribute(std::string(65001, 'x'), 1.0),
+                      Contains("the attribute name has 65001 characters"));
     writer.close();
     CHECK_THROWS_WITH(writer.append(SampleStep(0).step), Contains("closed"));
     CHECK_THROWS_WITH(writer.write_attribute("x", 1.0), Contains("closed"));
