@@ -1,5 +1,6 @@
 #include <spar/core/results_writer.hpp>
 
+#include "fresh_file.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_lock.hpp"
 #include "xdmf_sidecar.hpp"
@@ -397,6 +398,7 @@ struct ResultsWriter::Impl {
     // No lock: the file can be read (after a flush) while the run goes on.
     H5Pset_file_locking(access, false, true);
 #endif
+    detail::remove_for_rewrite(path);  // a new file: its close does not start ext4's write-back
     file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
     if (file < 0)
       throw Error("cannot create the results file " + path + ": " +

@@ -1,5 +1,7 @@
 #include "xdmf_sidecar.hpp"
 
+#include "fresh_file.hpp"
+
 #include <spar/error.hpp>
 
 #include <fcntl.h>
@@ -85,6 +87,7 @@ XdmfSidecar::XdmfSidecar(std::string xmf_path, const std::string& h5_name, Resul
     : path_(std::move(xmf_path)), h5_name_(xml_escape(h5_name)), layout_(std::move(layout)) {
   check_names(path_, h5_name, layout_);
   const std::string where = "core::ResultsWriter, XDMF sidecar " + path_;
+  remove_for_rewrite(path_);  // a new file: its close does not start ext4's write-back
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0)
     throw Error(std::string("cannot create the sidecar: ") + std::strerror(errno), where,

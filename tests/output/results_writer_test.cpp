@@ -1,4 +1,5 @@
 #include "output_fixtures.hpp"
+#include "xml_reader.hpp"
 
 #include <spar/core/results_writer.hpp>
 #include <spar/error.hpp>
@@ -6,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 
 using Catch::Matchers::Contains;
 using spar::core::ResultsLayout;
@@ -388,6 +390,33 @@ TEST_CASE("A moved ResultsWriter keeps writing the same file", "[output]") {
   }
   const ReadOnlyFile file(path);
   check_round_trip(file, 2);
+}
+
+TEST_CASE("A second run replaces the files, and writes through a symbolic link", "[output]") {
+  // The writer removes an old regular file and makes a new one (fresh_file.hpp: ext4 would
+  // otherwise write a truncated file back at its close); a symbolic link stays a link, its
+  // target truncated and rewritten as before.
+  const spar::test::ScratchFolder folder("rewrite");
+  namespace fs = std::filesystem;
+  const std::string path = folder.file("run.h5"), target = folder.file("target.h5");
+  const auto run = [](const std::string& h5, int steps) {
+    ResultsWriter writer(h5, spar::test::sample_layout(), 2);
+    for (int k = 0; k < steps; ++k) writer.append(SampleStep(k).step);
+  };
+  run(path, 5);
+  run(path, 3);  // the old file of 5 steps replaced
+  check_round_trip(ReadOnlyFile(path), 3);
+  run(target, 5);
+  fs::remove(path);
+  fs::remove(folder.file("run.xmf"));
+  fs::create_symlink(target, path);
+  fs::create_symlink(folder.file("target.xmf"), folder.file("run.xmf"));
+  run(path, 2);
+  CHECK(fs::is_symlink(path));
+  CHECK(fs::is_symlink(folder.file("run.xmf")));
+  check_round_trip(ReadOnlyFile(target), 2);
+  const auto root = spar::test::XmlReader::parse(spar::test::read_text(folder.file("target.xmf")));
+  CHECK(root.one("Domain").one("Grid").all("Grid").size() == 2);
 }
 
 TEST_CASE("Every dataset states its units and meaning; strings are UTF-8; counters are integers", "[output]") {
