@@ -3,6 +3,7 @@
 #include "fresh_file.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_lock.hpp"
+#include "written_files.hpp"
 #include "xdmf_sidecar.hpp"
 
 #include <spar/error.hpp>
@@ -232,6 +233,7 @@ struct ResultsWriter::Impl {
   ResultsLayout layout;
   int flush_every;
   bool closed = false;  ///< close() has run or an error closed the file (the caller's thread only)
+  std::string claim;    ///< the key of the HDF5 file in detail::written_files, until it is closed
   /// The HDF5 file: made by the writer thread's first job; the caller uses it only with the
   /// writer thread idle or joined.
   hid_t file = H5I_INVALID_HID;
@@ -658,8 +660,12 @@ struct ResultsWriter::Impl {
       }
     if (file >= 0) ok = H5Fclose(file) >= 0 && ok;
     file = H5I_INVALID_HID;
+    detail::release_written_file(std::exchange(claim, {}));
     return ok;
   }
+
+  /// A constructor that threw after claiming the file leaves it to other writers.
+  ~Impl() { detail::release_written_file(claim); }
 
   // ---- append: checks, then one push per series in plan_series() order ----
 
@@ -850,6 +856,7 @@ ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, i
   impl.plan_series();
   // What the caller can get wrong is refused here; the writer thread makes the files.
   const std::string where = "core::ResultsWriter(" + h5_path + ")";
+  impl.claim = detail::claim_written_file(h5_path, where);
   detail::XdmfSidecar::check_names(impl.xdmf_path, std::filesystem::path(h5_path).filename().string(), impl.layout);
   check_writable(h5_path, 0666, "the results file", where);  // HDF5's own mode for the files it makes
   check_writable(impl.xdmf_path, 0644, "the XDMF sidecar", where);

@@ -1,6 +1,7 @@
 #include "output_fixtures.hpp"
 #include "xml_reader.hpp"
 
+#include <spar/core/hdf5_file.hpp>
 #include <spar/core/results_writer.hpp>
 #include <spar/error.hpp>
 
@@ -417,6 +418,30 @@ TEST_CASE("A second run replaces the files, and writes through a symbolic link",
   check_round_trip(ReadOnlyFile(target), 2);
   const auto root = spar::test::XmlReader::parse(spar::test::read_text(folder.file("target.xmf")));
   CHECK(root.one("Domain").one("Grid").all("Grid").size() == 2);
+}
+
+TEST_CASE("A file being written is refused to a second writer of the program until it is closed", "[output]") {
+  // HDF5 refuses to truncate a file it has open; a ResultsWriter makes its file on its writer
+  // thread after removing an old one, so the constructors refuse it themselves (written_files.hpp),
+  // also under another name of the same file.
+  const spar::test::ScratchFolder folder("claims");
+  const std::string path = folder.file("run.h5"), link = folder.file("link.h5");
+  const std::string refusal = "is being written by another results writer of this program";
+  {
+    ResultsWriter first(path, spar::test::sample_layout());
+    std::filesystem::create_symlink(path, link);
+    CHECK_THROWS_WITH(ResultsWriter(path, spar::test::sample_layout()), Contains(path) && Contains(refusal));
+    CHECK_THROWS_WITH(ResultsWriter(link, spar::test::sample_layout()), Contains(link) && Contains(refusal));
+    CHECK_THROWS_WITH(spar::core::Hdf5File(path), Contains("core::Hdf5File(" + path + ")") && Contains(refusal));
+    first.append(SampleStep(0).step);
+    first.close();
+    const spar::core::Hdf5File constants(path);  // free once closed
+    CHECK_THROWS_WITH(ResultsWriter(path, spar::test::sample_layout()), Contains(refusal));
+  }
+  ResultsWriter again(path, spar::test::sample_layout());  // and once the Hdf5File is destroyed
+  again.append(SampleStep(0).step);
+  again.close();
+  check_round_trip(ReadOnlyFile(path), 1);
 }
 
 TEST_CASE("Every dataset states its units and meaning; strings are UTF-8; counters are integers", "[output]") {

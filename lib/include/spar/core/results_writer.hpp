@@ -125,9 +125,10 @@ public:
   /// Checks `layout` and that both paths can be written, then has the writer thread create
   /// (truncate) the HDF5 file and every dataset of `layout` with zero steps, and write an empty
   /// sidecar; flush() waits for that. Steps are written in blocks of `flush_every` (≥ 1). Throws
-  /// spar::Error naming the path and the reason if the layout is invalid or a file cannot be
-  /// opened for writing; a later failure of HDF5 making the file (a full disk) is rethrown by the
-  /// next call, like any error of the writer thread.
+  /// spar::Error naming the path and the reason if the layout is invalid, a file cannot be
+  /// opened for writing or another writer of this program (a ResultsWriter not yet closed, an
+  /// Hdf5File) is writing it; a later failure of HDF5 making the file (a full disk) is rethrown
+  /// by the next call, like any error of the writer thread.
   ResultsWriter(const std::string& h5_path, ResultsLayout layout, int flush_every = 100);
   /// Closes the file (see close()); reports a failure on stderr instead of throwing.
   ~ResultsWriter();
