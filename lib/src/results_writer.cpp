@@ -115,8 +115,8 @@ std::string creation_failure_reason(const std::string& path, const std::string& 
 /// HDF5 or the sidecar would give it) if it does not exist, so that a path which cannot be
 /// written is reported by the constructor; the writer thread then makes the file itself. An
 /// existing file is not truncated here: freeing its blocks takes 1-2 ms for a few MB, which the
-/// writer thread's truncation spends off the run's thread. Throws spar::Error naming the path
-/// and the reason.
+/// writer thread spends instead, off the run's thread, when it removes the old file and makes a
+/// new one (fresh_file.hpp). Throws spar::Error naming the path and the reason.
 void check_writable(const std::string& path, mode_t mode, const std::string& what, const std::string& where) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, mode);
   if (fd < 0) {
