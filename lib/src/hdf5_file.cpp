@@ -2,6 +2,7 @@
 #include <spar/error.hpp>
 
 #include "hdf5_attributes.hpp"
+#include "hdf5_lifetime.hpp"
 #include "hdf5_lock.hpp"
 
 #include <hdf5.h>
@@ -14,15 +15,18 @@ namespace spar::core {
 namespace {
 
 void check(herr_t status, const std::string& what, const std::string& path) {
-  if (status < 0)
+  if (status < 0) {
+    detail::note_hdf5_failure();
     throw Error("HDF5 failed to " + what, "core::Hdf5File(" + path + ")",
                 "check that the output folder exists and is writable, and the disk is not full");
+  }
 }
 
 }  // namespace
 
 Hdf5File::Hdf5File(const std::string& path) : path_(path) {
   const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+  detail::start_hdf5();
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
   file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   check(static_cast<herr_t>(file_ < 0 ? -1 : 0), "create the file", path);
@@ -30,7 +34,7 @@ Hdf5File::Hdf5File(const std::string& path) : path_(path) {
 
 Hdf5File::~Hdf5File() {
   const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
-  H5Fclose(static_cast<hid_t>(file_));
+  if (H5Fclose(static_cast<hid_t>(file_)) < 0) detail::note_hdf5_failure();
 }
 
 void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,

@@ -1,6 +1,7 @@
 #include <spar/core/results_writer.hpp>
 
 #include "hdf5_attributes.hpp"
+#include "hdf5_lifetime.hpp"
 #include "hdf5_lock.hpp"
 #include "xdmf_sidecar.hpp"
 
@@ -246,9 +247,11 @@ struct ResultsWriter::Impl {
   std::string where(const std::string& function) const { return "core::ResultsWriter::" + function + "(" + path + ")"; }
 
   void check(herr_t status, const std::string& what, const std::string& function) const {
-    if (status < 0)
+    if (status < 0) {
+      detail::note_hdf5_failure();
       throw Error("HDF5 failed to " + what, where(function),
                   "check that the output folder is writable and the disk is not full");
+    }
   }
 
   void require_open(const std::string& function) const {
@@ -333,6 +336,7 @@ struct ResultsWriter::Impl {
   static int vertex_count(const RigidBodyShape& shape) { return shape.kind == RigidBodyShape::Kind::box ? 8 : 6; }
 
   void create_file() {
+    detail::start_hdf5();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
     const Hid access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
 #if H5_VERSION_GE(1, 10, 7)
@@ -548,6 +552,7 @@ struct ResultsWriter::Impl {
       }
     ok = H5Fclose(file) >= 0 && ok;
     file = H5I_INVALID_HID;
+    if (!ok) detail::note_hdf5_failure();
     return ok;
   }
 
