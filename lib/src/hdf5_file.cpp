@@ -2,6 +2,7 @@
 #include <spar/error.hpp>
 
 #include "hdf5_attributes.hpp"
+#include "hdf5_lifetime.hpp"
 #include "hdf5_lock.hpp"
 #include "written_files.hpp"
 
@@ -15,9 +16,11 @@ namespace spar::core {
 namespace {
 
 void check(herr_t status, const std::string& what, const std::string& path) {
-  if (status < 0)
+  if (status < 0) {
+    detail::note_hdf5_failure();
     throw Error("HDF5 failed to " + what, "core::Hdf5File(" + path + ")",
                 "check that the output folder exists and is writable, and the disk is not full");
+  }
 }
 
 }  // namespace
@@ -25,6 +28,7 @@ void check(herr_t status, const std::string& what, const std::string& path) {
 Hdf5File::Hdf5File(const std::string& path)
     : path_(path), claim_(detail::claim_written_file(path, "core::Hdf5File(" + path + ")")) {
   const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+  detail::start_hdf5();
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
   file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0) detail::release_written_file(claim_);  // the destructor does not run
@@ -34,7 +38,7 @@ Hdf5File::Hdf5File(const std::string& path)
 Hdf5File::~Hdf5File() {
   {
     const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
-    H5Fclose(static_cast<hid_t>(file_));
+    if (H5Fclose(static_cast<hid_t>(file_)) < 0) detail::note_hdf5_failure();
   }
   detail::release_written_file(claim_);
 }

@@ -2,6 +2,7 @@
 
 #include "fresh_file.hpp"
 #include "hdf5_attributes.hpp"
+#include "hdf5_lifetime.hpp"
 #include "hdf5_lock.hpp"
 #include "written_files.hpp"
 #include "xdmf_sidecar.hpp"
@@ -287,9 +288,11 @@ struct ResultsWriter::Impl {
   std::string where(const std::string& function) const { return "core::ResultsWriter::" + function + "(" + path + ")"; }
 
   void check(herr_t status, const std::string& what, const std::string& function) const {
-    if (status < 0)
+    if (status < 0) {
+      detail::note_hdf5_failure();
       throw Error("HDF5 failed to " + what, where(function),
                   "check that the output folder is writable and the disk is not full");
+    }
   }
 
   void require_open(const std::string& function) const {
@@ -297,11 +300,14 @@ struct ResultsWriter::Impl {
       throw Error("the results file is closed", where(function), "call " + function + " before close()");
   }
 
-  /// Takes the library's HDF5 lock for HDF5 calls on this thread, with HDF5's printing of errors
-  /// off: they become spar::Error, not stderr noise (the setting is per thread in a thread-safe
-  /// HDF5, and the file is made on the writer thread, used on both).
+  /// Takes the library's HDF5 lock for HDF5 calls on this thread, HDF5 started by the library
+  /// (hdf5_lifetime.hpp: before any HDF5 call, the first of which would start it with its own
+  /// exit handler), with HDF5's printing of errors off: they become spar::Error, not stderr
+  /// noise (the setting is per thread in a thread-safe HDF5, and the file is made on the writer
+  /// thread, used on both).
   static std::unique_lock<std::mutex> hdf5_calls() {
     std::unique_lock<std::mutex> hdf5(detail::hdf5_mutex());
+    detail::start_hdf5();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     return hdf5;
   }
@@ -660,6 +666,7 @@ struct ResultsWriter::Impl {
       }
     if (file >= 0) ok = H5Fclose(file) >= 0 && ok;
     file = H5I_INVALID_HID;
+    if (!ok) detail::note_hdf5_failure();
     detail::release_written_file(std::exchange(claim, {}));
     return ok;
   }

@@ -102,8 +102,9 @@ private:
 
 /// Runs `work` in a forked process and returns the text it returned (or an exception's
 /// message). The process ends with _exit, without the atexit handlers: the test process keeps
-/// neither the child's resource limits nor its HDF5 state (a file whose H5Fclose failed on a
-/// full disk makes HDF5's own atexit cleanup crash).
+/// neither the child's resource limits nor its HDF5 state (in this process the tests' readers may
+/// start HDF5 before the library does, and then HDF5's own exit cleanup crashes after a failed
+/// write: docs/output.md, "A full disk").
 std::string run_in_child(const std::function<std::string()>& work) {
   int output[2];
   if (pipe(output) != 0) throw std::runtime_error("pipe failed");

@@ -1,0 +1,38 @@
+#include "hdf5_lifetime.hpp"
+
+#include "hdf5_lock.hpp"
+
+#include <hdf5.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <mutex>
+
+namespace spar::core::detail {
+
+namespace {
+
+std::atomic<bool> hdf5_failed{false};
+
+/// The exit handler: HDF5's own cleanup, unless a write of ours failed (hdf5_lifetime.hpp).
+void end_hdf5() {
+  if (hdf5_failed.load()) return;
+  const std::lock_guard<std::mutex> hdf5(hdf5_mutex());
+  H5close();
+}
+
+}  // namespace
+
+void start_hdf5() {
+  static const bool started = [] {
+    H5dont_atexit();  // before HDF5's first call, so that it registers no handler of its own
+    H5open();
+    std::atexit(end_hdf5);
+    return true;
+  }();
+  static_cast<void>(started);
+}
+
+void note_hdf5_failure() noexcept { hdf5_failed.store(true); }
+
+}  // namespace spar::core::detail

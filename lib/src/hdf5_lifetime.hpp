@@ -1,0 +1,25 @@
+#pragma once
+/// \file
+/// HDF5's start and end in a process that writes results with spar (docs/output.md, "A full
+/// disk").
+///
+/// HDF5 1.10 (Debian 12's) registers its own cleanup with atexit at its first call. Once a file's
+/// data could not be written — a full disk, a file-size limit — that cleanup crashes at exit
+/// (SIGSEGV in H5F__close_cb), whether or not the file has been closed since: a run that reported
+/// the failure as a spar::Error and ended normally would still die of a segmentation fault. So
+/// the library starts HDF5 itself, without HDF5's handler, and registers one of its own, which
+/// ends HDF5 (H5close: every file still open is closed) unless an HDF5 call of the library has
+/// failed — then HDF5 is left as it is, and the process ends without its cleanup (the data
+/// flushed before the failure are on disk either way).
+
+namespace spar::core::detail {
+
+/// Starts HDF5 on the first call; later calls do nothing. To be called with hdf5_mutex() held,
+/// before the first HDF5 call of a results writer or file. When code outside spar started HDF5
+/// earlier, HDF5's own handler is already registered and a failed write still crashes the exit.
+void start_hdf5();
+
+/// Records that an HDF5 call of the library failed: HDF5 is not ended at exit.
+void note_hdf5_failure() noexcept;
+
+}  // namespace spar::core::detail
