@@ -76,7 +76,7 @@ int main(int argc, char** argv) try {
   const core::GeometricallyExactBeam& coupler = model.beam(mechanism.coupler);
   const int crank_root = crank.node(0), crank_tip = crank.node(crank.control_point_count() - 1);
   const int slider = mechanism.slider_node;
-  const double length_2 = examples::SliderCrank::coupler_length;
+  const examples::DeformationRate rod2_rate(coupler, examples::SliderCrank::coupler_length);
 
   // 3. Integrate.
   solvers::GeneralizedAlpha integrator(
@@ -136,7 +136,7 @@ int main(int argc, char** argv) try {
   std::optional<double> slider_x_at_0_1;  // the slider at t = 0.1 s, to compare runs and engines
   auto observe = [&](bool last) {
     const core::Configuration& q = model.state();
-    const double rate = examples::deformation_rate(coupler, q, length_2);
+    const double rate = rod2_rate(q);
     // Rod I's angular speed about Z: the rotation rate of its chord, (r × ṙ)_z / |r|² with
     // r = x_tip − x_root. (The root section's own angular velocity carries the high-frequency
     // local vibration that the concentrated moment excites in a section of tiny rotary inertia.)
@@ -151,7 +151,7 @@ int main(int argc, char** argv) try {
     max_residual = std::max(max_residual, residual);
     if (!last && integrator.counters().steps % record_every != 0) return;
     const solvers::Energies energy = integrator.energies();
-    const Eigen::Vector3d midpoint = coupler.position_at(q, 0.5);
+    const Eigen::Vector3d midpoint = rod2_rate.midpoint(q);
     examples::write_csv_row(csv, {integrator.time(), rate, speed, q.position[slider].x(), midpoint.x(), midpoint.y(),
                                   midpoint.z(), residual, static_cast<double>(integrator.last_step_iterations()),
                                   energy.kinetic, energy.strain, energy.gravity, energy.external_work,

@@ -70,11 +70,26 @@ inline SliderCrank build_slider_crank(int elements, double drive_rise_time = 0.0
 }
 
 /// A rod's deformation rate (003 §5.1): the distance of its midpoint from the midpoint of its
-/// chord, over its length.
-inline double deformation_rate(const core::GeometricallyExactBeam& rod, const core::Configuration& q,
-                               double length) {
-  const Eigen::Vector3d chord_middle = 0.5 * (rod.position_at(q, 0.0) + rod.position_at(q, 1.0));
-  return (rod.position_at(q, 0.5) - chord_middle).norm() / length;
-}
+/// chord, over its length. The NURBS basis at the root, the middle and the tip is computed once
+/// (the example takes the rate at every step); the positions are position_at's.
+class DeformationRate {
+public:
+  DeformationRate(const core::GeometricallyExactBeam& rod, double length)
+      : rod_(&rod), length_(length), root_(rod.centerline_point(0.0, 0)), middle_(rod.centerline_point(0.5, 0)),
+        tip_(rod.centerline_point(1.0, 0)) {}
+
+  /// The rod's midpoint x(u = 1/2).
+  Eigen::Vector3d midpoint(const core::Configuration& q) const { return rod_->centerline_derivative(q, middle_, 0); }
+  double operator()(const core::Configuration& q) const {
+    const Eigen::Vector3d chord_middle =
+        0.5 * (rod_->centerline_derivative(q, root_, 0) + rod_->centerline_derivative(q, tip_, 0));
+    return (midpoint(q) - chord_middle).norm() / length_;
+  }
+
+private:
+  const core::GeometricallyExactBeam* rod_;
+  double length_;
+  core::CenterlinePoint root_, middle_, tip_;
+};
 
 }  // namespace spar::examples

@@ -4,6 +4,7 @@
 #include "hdf5_attributes.hpp"
 #include "hdf5_lifetime.hpp"
 #include "hdf5_lock.hpp"
+#include "written_files.hpp"
 
 #include <hdf5.h>
 
@@ -24,17 +25,22 @@ void check(herr_t status, const std::string& what, const std::string& path) {
 
 }  // namespace
 
-Hdf5File::Hdf5File(const std::string& path) : path_(path) {
+Hdf5File::Hdf5File(const std::string& path)
+    : path_(path), claim_(detail::claim_written_file(path, "core::Hdf5File(" + path + ")")) {
   const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
   detail::start_hdf5();
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
   file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) detail::release_written_file(claim_);  // the destructor does not run
   check(static_cast<herr_t>(file_ < 0 ? -1 : 0), "create the file", path);
 }
 
 Hdf5File::~Hdf5File() {
-  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
-  if (H5Fclose(static_cast<hid_t>(file_)) < 0) detail::note_hdf5_failure();
+  {
+    const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+    if (H5Fclose(static_cast<hid_t>(file_)) < 0) detail::note_hdf5_failure();
+  }
+  detail::release_written_file(claim_);
 }
 
 void Hdf5File::write(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,

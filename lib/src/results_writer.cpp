@@ -1,8 +1,10 @@
 #include <spar/core/results_writer.hpp>
 
+#include "fresh_file.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_lifetime.hpp"
 #include "hdf5_lock.hpp"
+#include "written_files.hpp"
 #include "xdmf_sidecar.hpp"
 
 #include <spar/error.hpp>
@@ -10,14 +12,18 @@
 
 #include <Eigen/Geometry>
 
+#include <fcntl.h>
 #include <hdf5.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <cstring>
+#include <deque>
 #include <exception>
 #include <filesystem>
 #include <limits>
@@ -25,6 +31,7 @@
 #include <set>
 #include <thread>
 #include <utility>
+#include <variant>
 
 namespace spar::core {
 
@@ -93,8 +100,8 @@ std::string format_double(double value) {
   return std::string(text, result.ptr);
 }
 
-/// Why `path` cannot be created, as far as the file system tells.
-std::string creation_failure_reason(const std::string& path) {
+/// Why `path` cannot be created, as far as the file system tells, else `otherwise`.
+std::string creation_failure_reason(const std::string& path, const std::string& otherwise) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path folder = fs::absolute(path, ec).parent_path();
@@ -102,7 +109,23 @@ std::string creation_failure_reason(const std::string& path) {
   if (!fs::is_directory(folder, ec)) return folder.string() + " is not a folder";
   if (access(folder.c_str(), W_OK) != 0) return "its folder " + folder.string() + " is not writable";
   if (fs::is_directory(path, ec)) return "it is a folder";
-  return "HDF5 refused to create it (the file may be open in another program, or the disk full)";
+  return otherwise;
+}
+
+/// Opens `path` for writing as the writer thread will, creating it (empty, with the permissions
+/// HDF5 or the sidecar would give it) if it does not exist, so that a path which cannot be
+/// written is reported by the constructor; the writer thread then makes the file itself. An
+/// existing file is not truncated here: freeing its blocks takes 1-2 ms for a few MB, which the
+/// writer thread spends instead, off the run's thread, when it removes the old file and makes a
+/// new one (fresh_file.hpp). Throws spar::Error naming the path and the reason.
+void check_writable(const std::string& path, mode_t mode, const std::string& what, const std::string& where) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, mode);
+  if (fd < 0) {
+    const std::string system_reason = std::strerror(errno);
+    throw Error("cannot create " + what + " " + path + ": " + creation_failure_reason(path, system_reason),
+                where, "pass a path in an existing, writable folder");
+  }
+  ::close(fd);
 }
 
 /// A quantity of layout.`field`: a name that is non-empty, has no '/' (it becomes a dataset name)
@@ -210,6 +233,10 @@ struct ResultsWriter::Impl {
   std::string xdmf_path;
   ResultsLayout layout;
   int flush_every;
+  bool closed = false;  ///< close() has run or an error closed the file (the caller's thread only)
+  std::string claim;    ///< the key of the HDF5 file in detail::written_files, until it is closed
+  /// The HDF5 file: made by the writer thread's first job; the caller uses it only with the
+  /// writer thread idle or joined.
   hid_t file = H5I_INVALID_HID;
   std::vector<Series> series;  ///< /time first; the others in append order
   int positions = -1, quaternions = -1, velocities = -1, multipliers = -1;
@@ -233,14 +260,28 @@ struct ResultsWriter::Impl {
     int count = 0;                          ///< its steps
     std::vector<std::vector<double>> rows;  ///< per series, `count` steps row-major (series[k].buffer's layout)
   };
-  /// The block in flight. The caller fills it only while `queued` is false (the writer thread is
-  /// idle); the writer thread reads it only while `queued` is true.
+  /// The block in flight. The caller fills it only while `block_queued` is false; the writer
+  /// thread reads it only while `block_queued` is true.
   Block block;
+
+  /// The writer thread's jobs, done in the order queued: the creation of the file (the first),
+  /// a root attribute, the block in flight.
+  struct CreateFile {};
+  struct WriteAttribute {
+    std::string name;
+    std::variant<double, std::int64_t, std::string> value;
+  };
+  struct WriteBlock {};
+  using Job = std::variant<CreateFile, WriteAttribute, WriteBlock>;
+
   std::thread worker;
-  mutable std::mutex mutex;                  ///< guards queued, stopping, failure and flushed
-  mutable std::condition_variable changed;   ///< signals a block handed over, a block done, a stop
-  bool queued = false;                       ///< `block` holds steps the writer thread has not finished
-  bool stopping = false;                     ///< the writer thread returns once `block` is done
+  mutable std::mutex mutex;                  ///< guards the fields below
+  mutable std::condition_variable changed;   ///< signals a job queued, a job done, a stop
+  std::deque<Job> jobs;                      ///< queued, not yet taken by the writer thread
+  bool working = false;                      ///< the writer thread is doing a job taken from `jobs`
+  bool block_queued = false;                 ///< `block` holds steps the writer thread has not finished
+  bool stopping = false;                     ///< the writer thread returns once `jobs` is empty
+  bool failed = false;                       ///< the writer thread met an error: it does no more jobs
   std::exception_ptr failure;                ///< the writer thread's error, not yet rethrown to the caller
   int flushed = 0;                           ///< steps on disk: written, H5Fflush-ed and in the sidecar
 
@@ -255,19 +296,43 @@ struct ResultsWriter::Impl {
   }
 
   void require_open(const std::string& function) const {
-    if (file < 0)
+    if (closed)
       throw Error("the results file is closed", where(function), "call " + function + " before close()");
   }
 
-  /// Runs `write(file)`, which writes the root group's attribute `name`, with the writer thread
-  /// idle, and flushes the file.
-  template <class Write>
-  void write_attribute(const std::string& name, Write write) {
+  /// Takes the library's HDF5 lock for HDF5 calls on this thread, HDF5 started by the library
+  /// (hdf5_lifetime.hpp: before any HDF5 call, the first of which would start it with its own
+  /// exit handler), with HDF5's printing of errors off: they become spar::Error, not stderr
+  /// noise (the setting is per thread in a thread-safe HDF5, and the file is made on the writer
+  /// thread, used on both).
+  static std::unique_lock<std::mutex> hdf5_calls() {
+    std::unique_lock<std::mutex> hdf5(detail::hdf5_mutex());
+    detail::start_hdf5();
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    return hdf5;
+  }
+
+  /// Queues the root attribute `attribute` for the writer thread, after the jobs queued before
+  /// it. A name HDF5 would refuse is refused here; an HDF5 failure of the write is rethrown
+  /// like any error of the writer thread.
+  void queue_attribute(WriteAttribute attribute) {
     require_open("write_attribute");
-    wait_idle();
-    const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
-    check(write(file), "write attribute " + name, "write_attribute");
-    check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
+    report_failure();
+    // HDF5 keeps an attribute in one header message of at most 64 KiB (a double's name may
+    // have 65 479 bytes in HDF5 1.10); 65 000 leaves the type and the value room.
+    if (attribute.name.empty() || attribute.name.size() > 65000)
+      throw Error("the attribute name has " + std::to_string(attribute.name.size()) + " characters", where("write_attribute"),
+                  "give a name of 1 to 65 000 characters, e.g. time_step");
+    queue(std::move(attribute));
+  }
+
+  /// Hands `job` to the writer thread.
+  void queue(Job job) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      jobs.push_back(std::move(job));
+    }
+    changed.notify_all();
   }
 
   /// Adds a series of `shape` per step and returns its index.
@@ -336,17 +401,47 @@ struct ResultsWriter::Impl {
   static int vertex_count(const RigidBodyShape& shape) { return shape.kind == RigidBodyShape::Kind::box ? 8 : 6; }
 
   void create_file() {
-    detail::start_hdf5();
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
     const Hid access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
 #if H5_VERSION_GE(1, 10, 7)
     // No lock: the file can be read (after a flush) while the run goes on.
     H5Pset_file_locking(access, false, true);
 #endif
+    detail::remove_for_rewrite(path);  // a new file: its close does not start ext4's write-back
     file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
     if (file < 0)
-      throw Error("cannot create the results file " + path + ": " + creation_failure_reason(path),
+      throw Error("cannot create the results file " + path + ": " +
+                      creation_failure_reason(path, "HDF5 refused to create it (the file may be open in another "
+                                                    "program, or the disk full)"),
                   "core::ResultsWriter(" + path + ")", "pass a path in an existing, writable folder");
+  }
+
+  /// The writer thread's first job: the HDF5 file, every dataset of the layout with zero steps,
+  /// the sidecar's topologies and the schema, H5Fflush, then the empty sidecar.
+  void create_files() {
+    {
+      const auto hdf5 = hdf5_calls();
+      create_file();
+      for (Series& s : series) create_dataset(s);
+      write_topologies();
+      check(detail::write_string_attribute(file, "schema", "spar.results/2"), "write attribute schema", "ResultsWriter");
+      check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "ResultsWriter");
+    }
+    sidecar = std::make_unique<detail::XdmfSidecar>(xdmf_path, std::filesystem::path(path).filename().string(), layout);
+  }
+
+  /// The writer thread's job for a root attribute: writes it, replacing one of the same name,
+  /// and flushes the file.
+  void write_root_attribute(const WriteAttribute& attribute) {
+    const auto hdf5 = hdf5_calls();
+    herr_t status = 0;
+    if (const auto* number = std::get_if<double>(&attribute.value))
+      status = detail::write_scalar_attribute(file, attribute.name, H5T_NATIVE_DOUBLE, number);
+    else if (const auto* count = std::get_if<std::int64_t>(&attribute.value))
+      status = detail::write_scalar_attribute(file, attribute.name, H5T_NATIVE_INT64, count);
+    else
+      status = detail::write_string_attribute(file, attribute.name, std::get<std::string>(attribute.value));
+    check(status, "write attribute " + attribute.name, "write_attribute");
+    check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "write_attribute");
   }
 
   /// A link-creation property list that creates missing intermediate groups.
@@ -431,46 +526,58 @@ struct ResultsWriter::Impl {
   /// (series 0 holds their times), so both files are complete up to the block when it returns.
   void write_and_flush(const Block& b) {
     {
-      const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+      const auto hdf5 = hdf5_calls();
       write_block(b);
       check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "flush");
     }
     sidecar->append(b.first, b.rows[0], b.first + b.count);
   }
 
-  /// The writer thread: writes each block handed over, in order, until told to stop. After an
-  /// error it keeps the error for the caller and writes nothing more (no HDF5 call).
+  /// The writer thread: does the jobs queued, in order, until told to stop. After an error it
+  /// keeps the error for the caller and does no more jobs (no HDF5 call).
   void run_writer() {
-    {
-      const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
-      H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // the error stack is per thread in a thread-safe HDF5
-    }
     std::unique_lock<std::mutex> lock(mutex);
     while (true) {
-      changed.wait(lock, [this] { return queued || stopping; });
-      if (!queued) return;
-      if (!failure) {
+      changed.wait(lock, [this] { return !jobs.empty() || stopping; });
+      if (jobs.empty()) return;
+      const Job job = std::move(jobs.front());
+      jobs.pop_front();
+      const bool writes_block = std::holds_alternative<WriteBlock>(job);
+      if (!failed) {
+        working = true;
         lock.unlock();
         std::exception_ptr error;
         try {
-          write_and_flush(block);
+          do_job(job);
         } catch (...) {
           error = std::current_exception();
         }
         lock.lock();
-        if (error)
-          failure = error;
-        else
-          flushed = block.first + block.count;
+        working = false;
+        failed = error != nullptr;
+        failure = error;
+        if (!failed && writes_block) flushed = block.first + block.count;
       }
-      for (std::vector<double>& rows : block.rows) rows.clear();  // keeps their capacity for the next swap
-      queued = false;
+      if (writes_block) {
+        for (std::vector<double>& rows : block.rows) rows.clear();  // keeps their capacity for the next swap
+        block_queued = false;
+      }
       changed.notify_all();
     }
   }
 
-  /// Starts the writer thread (the constructor, once the file and the sidecar exist).
-  /// Both blocks' buffers are reserved whole, so append never reallocates.
+  void do_job(const Job& job) {
+    if (std::holds_alternative<CreateFile>(job))
+      create_files();
+    else if (const auto* attribute = std::get_if<WriteAttribute>(&job))
+      write_root_attribute(*attribute);
+    else
+      write_and_flush(block);
+  }
+
+  /// Starts the writer thread (the constructor, once the path has proved writable) with the
+  /// creation of the files as its first job. Both blocks' buffers are reserved whole, so append
+  /// never reallocates.
   void start_writer() {
     block.rows.resize(series.size());
     for (std::size_t k = 0; k < series.size(); ++k) {
@@ -478,32 +585,38 @@ struct ResultsWriter::Impl {
       series[k].buffer.reserve(values);
       block.rows[k].reserve(values);
     }
+    jobs.emplace_back(CreateFile{});
     worker = std::thread([this] { run_writer(); });
   }
 
   /// Hands the buffered steps to the writer thread as one block, once it has finished the
   /// previous one: the filled buffers and the written block's (emptied) storage swap, so a step
   /// is copied once and, in steady state, nothing is allocated. Rethrows an earlier error of the
-  /// writer thread instead (see wait_idle).
+  /// writer thread instead (see report_failure).
   void hand_over() {
     if (appended == handed) return;
-    wait_idle();
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      changed.wait(lock, [this] { return !block_queued; });
+    }
+    report_failure();
     {
       const std::lock_guard<std::mutex> lock(mutex);
       block.first = handed;
       block.count = appended - handed;
       for (std::size_t k = 0; k < series.size(); ++k) std::swap(block.rows[k], series[k].buffer);
-      queued = true;
+      block_queued = true;
+      jobs.emplace_back(WriteBlock{});
     }
     changed.notify_all();
     handed = appended;
   }
 
-  /// Waits until the writer thread has finished every block handed to it (it is then idle: the
-  /// caller may make HDF5 calls); returns the steps on disk.
+  /// Waits until the writer thread has done every job queued (it is then idle: the caller may
+  /// make HDF5 calls); returns the steps on disk.
   int await_writer() const {
     std::unique_lock<std::mutex> lock(mutex);
-    changed.wait(lock, [this] { return !queued; });
+    changed.wait(lock, [this] { return jobs.empty() && !working; });
     return flushed;
   }
 
@@ -514,7 +627,7 @@ struct ResultsWriter::Impl {
   }
 
   /// Rethrows, after closing the file, an error the writer thread has met so far, without
-  /// waiting for the block in flight.
+  /// waiting for the job in hand.
   void report_failure() {
     std::exception_ptr error;
     {
@@ -527,7 +640,7 @@ struct ResultsWriter::Impl {
     }
   }
 
-  /// Stops and joins the writer thread once it has written what was handed to it.
+  /// Stops and joins the writer thread once it has done the jobs queued.
   void stop_writer() {
     if (!worker.joinable()) return;
     {
@@ -538,23 +651,28 @@ struct ResultsWriter::Impl {
     worker.join();
   }
 
-  /// Stops the writer thread, then closes every dataset, the file and the sidecar; returns false
-  /// if HDF5 reported a failure.
+  /// Stops the writer thread, then closes every dataset, the file and the sidecar (those the
+  /// writer thread made); returns false if HDF5 reported a failure.
   bool release() {
     stop_writer();
+    closed = true;
     sidecar.reset();
-    const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+    const auto hdf5 = hdf5_calls();
     bool ok = true;
     for (Series& s : series)
       if (s.dataset >= 0) {
         ok = H5Dclose(s.dataset) >= 0 && ok;
         s.dataset = H5I_INVALID_HID;
       }
-    ok = H5Fclose(file) >= 0 && ok;
+    if (file >= 0) ok = H5Fclose(file) >= 0 && ok;
     file = H5I_INVALID_HID;
     if (!ok) detail::note_hdf5_failure();
+    detail::release_written_file(std::exchange(claim, {}));
     return ok;
   }
+
+  /// A constructor that threw after claiming the file leaves it to other writers.
+  ~Impl() { detail::release_written_file(claim); }
 
   // ---- append: checks, then one push per series in plan_series() order ----
 
@@ -743,23 +861,13 @@ ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, i
   impl.layout = std::move(layout);
   impl.flush_every = flush_every;
   impl.plan_series();
-  std::unique_lock<std::mutex> hdf5(detail::hdf5_mutex());
-  impl.create_file();
-  try {
-    for (Series& s : impl.series) impl.create_dataset(s);
-    impl.write_topologies();
-    impl.check(detail::write_string_attribute(impl.file, "schema", "spar.results/2"), "write attribute schema",
-               "ResultsWriter");
-    impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "ResultsWriter");
-    hdf5.unlock();
-    impl.sidecar = std::make_unique<detail::XdmfSidecar>(
-        impl.xdmf_path, std::filesystem::path(h5_path).filename().string(), impl.layout);
-    impl.start_writer();
-  } catch (...) {
-    if (hdf5.owns_lock()) hdf5.unlock();  // release() takes it
-    impl.release();
-    throw;
-  }
+  // What the caller can get wrong is refused here; the writer thread makes the files.
+  const std::string where = "core::ResultsWriter(" + h5_path + ")";
+  impl.claim = detail::claim_written_file(h5_path, where);
+  detail::XdmfSidecar::check_names(impl.xdmf_path, std::filesystem::path(h5_path).filename().string(), impl.layout);
+  check_writable(h5_path, 0666, "the results file", where);  // HDF5's own mode for the files it makes
+  check_writable(impl.xdmf_path, 0644, "the XDMF sidecar", where);
+  impl.start_writer();
 }
 
 ResultsWriter::~ResultsWriter() {
@@ -779,20 +887,14 @@ ResultsWriter& ResultsWriter::operator=(ResultsWriter&& other) noexcept {
   return *this;
 }
 
-void ResultsWriter::write_attribute(const std::string& name, double value) {
-  impl_->write_attribute(name, [&](hid_t file) {
-    return detail::write_scalar_attribute(file, name, H5T_NATIVE_DOUBLE, &value);
-  });
-}
+void ResultsWriter::write_attribute(const std::string& name, double value) { impl_->queue_attribute({name, value}); }
 
 void ResultsWriter::write_attribute(const std::string& name, std::int64_t value) {
-  impl_->write_attribute(name, [&](hid_t file) {
-    return detail::write_scalar_attribute(file, name, H5T_NATIVE_INT64, &value);
-  });
+  impl_->queue_attribute({name, value});
 }
 
 void ResultsWriter::write_attribute(const std::string& name, const std::string& value) {
-  impl_->write_attribute(name, [&](hid_t file) { return detail::write_string_attribute(file, name, value); });
+  impl_->queue_attribute({name, value});
 }
 
 void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
@@ -800,7 +902,7 @@ void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixX
   Impl& impl = *impl_;
   impl.require_open("write_constant");
   impl.wait_idle();
-  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
+  const auto hdf5 = Impl::hdf5_calls();
   if (H5Lexists(impl.file, name.c_str(), H5P_DEFAULT) > 0)
     throw Error("the file already holds an object named " + name, impl.where("write_constant"),
                 "write each constant once, under a name not used by the time histories (docs/output.md)");
@@ -834,14 +936,14 @@ void ResultsWriter::flush() {
 }
 
 void ResultsWriter::close() {
-  if (!impl_ || impl_->file < 0) return;
+  if (!impl_ || impl_->closed) return;
   std::exception_ptr failure;
   try {
     flush();
   } catch (...) {
     failure = std::current_exception();
   }
-  const bool released = impl_->file < 0 || impl_->release();  // a writer-thread error released it already
+  const bool released = impl_->closed || impl_->release();  // a writer-thread error released it already
   if (failure) std::rethrow_exception(failure);
   impl_->check(released ? 0 : -1, "close the file", "close");
 }

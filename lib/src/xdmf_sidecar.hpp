@@ -24,8 +24,12 @@ class XdmfSidecar {
 public:
   /// Creates (truncates) `xmf_path` as an empty temporal collection whose heavy data are in the
   /// HDF5 file `h5_name` (its name relative to the sidecar). Throws spar::Error if the file
-  /// cannot be created or `h5_name` holds a character the XDMF reference syntax reserves.
+  /// cannot be created or if check_names refuses the names.
   XdmfSidecar(std::string xmf_path, const std::string& h5_name, ResultsLayout layout);
+  /// Throws spar::Error naming the sidecar `xmf_path` if `h5_name` holds a character the XDMF
+  /// reference syntax reserves, or it or a centerline field's name a character XML refuses: what
+  /// the constructor checks first, for a caller that makes the sidecar later on another thread.
+  static void check_names(const std::string& xmf_path, const std::string& h5_name, const ResultsLayout& layout);
   /// Closes the file descriptor; what was written stays.
   ~XdmfSidecar();
   XdmfSidecar(const XdmfSidecar&) = delete;

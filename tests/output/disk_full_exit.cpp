@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   spar::core::ResultsLayout layout;
   layout.centerline_points = {2000};  // 48 kB per step, written in blocks of one step
   auto writer = std::make_unique<spar::core::ResultsWriter>(path, layout, 1);
+  writer->flush();  // the writer thread has made the file: its size is the empty file's
   // The file may grow 4 kB past its empty size: the first block's write fails with EFBIG (a
   // file-size limit, ignored as a signal), as on a full disk.
   std::signal(SIGXFSZ, SIG_IGN);

@@ -1,11 +1,14 @@
 #include "output_fixtures.hpp"
+#include "xml_reader.hpp"
 
+#include <spar/core/hdf5_file.hpp>
 #include <spar/core/results_writer.hpp>
 #include <spar/error.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 
 using Catch::Matchers::Contains;
 using spar::core::ResultsLayout;
@@ -262,6 +265,12 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
     CHECK_THROWS_AS(ResultsWriter(path, layout), spar::Error);
     CHECK_THROWS_WITH(ResultsWriter(path, layout), Contains(path) && Contains("does not exist"));
   }
+  SECTION("a path that is a folder") {
+    // The writer thread makes the file; the constructor still refuses a path it could not write.
+    const std::string path = folder.file("run.h5");
+    std::filesystem::create_directory(path);
+    CHECK_THROWS_WITH(ResultsWriter(path, layout), Contains("cannot create the results file " + path + ": it is a folder"));
+  }
   SECTION("layout") {
     layout.centerline_points[0] = 1;
     CHECK_THROWS_WITH(ResultsWriter(folder.file("a.h5"), layout), Contains("layout.centerline_points[0] = 1"));
@@ -309,6 +318,10 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
   SECTION("names taken and a closed file") {
     ResultsWriter writer(folder.file("run.h5"), layout);
     CHECK_THROWS_WITH(writer.write_constant("time", Eigen::MatrixXd::Zero(1, 1), "s", "t"), Contains("already holds an object named time"));
+    // Attributes are written by the writer thread; a name HDF5 would refuse is refused at the call.
+    CHECK_THROWS_WITH(writer.write_attribute("", 1.0), Contains("the attribute name has 0 characters"));
+    CHECK_THROWS_WITH(writer.write_attribute(std::string(65001, 'x'), 1.0),
+                      Contains("the attribute name has 65001 characters"));
     writer.close();
     CHECK_THROWS_WITH(writer.append(SampleStep(0).step), Contains("closed"));
     CHECK_THROWS_WITH(writer.write_attribute("x", 1.0), Contains("closed"));
@@ -378,6 +391,57 @@ TEST_CASE("A moved ResultsWriter keeps writing the same file", "[output]") {
   }
   const ReadOnlyFile file(path);
   check_round_trip(file, 2);
+}
+
+TEST_CASE("A second run replaces the files, and writes through a symbolic link", "[output]") {
+  // The writer removes an old regular file and makes a new one (fresh_file.hpp: ext4 would
+  // otherwise write a truncated file back at its close); a symbolic link stays a link, its
+  // target truncated and rewritten as before.
+  const spar::test::ScratchFolder folder("rewrite");
+  namespace fs = std::filesystem;
+  const std::string path = folder.file("run.h5"), target = folder.file("target.h5");
+  const auto run = [](const std::string& h5, int steps) {
+    ResultsWriter writer(h5, spar::test::sample_layout(), 2);
+    for (int k = 0; k < steps; ++k) writer.append(SampleStep(k).step);
+  };
+  run(path, 5);
+  run(path, 3);  // the old file of 5 steps replaced
+  check_round_trip(ReadOnlyFile(path), 3);
+  run(target, 5);
+  fs::remove(path);
+  fs::remove(folder.file("run.xmf"));
+  fs::create_symlink(target, path);
+  fs::create_symlink(folder.file("target.xmf"), folder.file("run.xmf"));
+  run(path, 2);
+  CHECK(fs::is_symlink(path));
+  CHECK(fs::is_symlink(folder.file("run.xmf")));
+  check_round_trip(ReadOnlyFile(target), 2);
+  const auto root = spar::test::XmlReader::parse(spar::test::read_text(folder.file("target.xmf")));
+  CHECK(root.one("Domain").one("Grid").all("Grid").size() == 2);
+}
+
+TEST_CASE("A file being written is refused to a second writer of the program until it is closed", "[output]") {
+  // HDF5 refuses to truncate a file it has open; a ResultsWriter makes its file on its writer
+  // thread after removing an old one, so the constructors refuse it themselves (written_files.hpp),
+  // also under another name of the same file.
+  const spar::test::ScratchFolder folder("claims");
+  const std::string path = folder.file("run.h5"), link = folder.file("link.h5");
+  const std::string refusal = "is being written by another results writer of this program";
+  {
+    ResultsWriter first(path, spar::test::sample_layout());
+    std::filesystem::create_symlink(path, link);
+    CHECK_THROWS_WITH(ResultsWriter(path, spar::test::sample_layout()), Contains(path) && Contains(refusal));
+    CHECK_THROWS_WITH(ResultsWriter(link, spar::test::sample_layout()), Contains(link) && Contains(refusal));
+    CHECK_THROWS_WITH(spar::core::Hdf5File(path), Contains("core::Hdf5File(" + path + ")") && Contains(refusal));
+    first.append(SampleStep(0).step);
+    first.close();
+    const spar::core::Hdf5File constants(path);  // free once closed
+    CHECK_THROWS_WITH(ResultsWriter(path, spar::test::sample_layout()), Contains(refusal));
+  }
+  ResultsWriter again(path, spar::test::sample_layout());  // and once the Hdf5File is destroyed
+  again.append(SampleStep(0).step);
+  again.close();
+  check_round_trip(ReadOnlyFile(path), 1);
 }
 
 TEST_CASE("Every dataset states its units and meaning; strings are UTF-8; counters are integers", "[output]") {

@@ -10,9 +10,12 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 using Catch::Matchers::Contains;
 using spar::core::ResultsWriter;
@@ -217,6 +220,7 @@ TEST_CASE("An error on the writer thread surfaces on the caller and closes the w
       return s;
     };
     std::string text;
+    writer->flush();  // the writer thread has made the file: its size is the empty file's
     const FileSizeLimit limit(std::filesystem::file_size(path) + 4096);
     // The first append hands its block over; the error surfaces at a later call (append or flush).
     try {
@@ -270,4 +274,47 @@ TEST_CASE("The destructor writes the blocks still queued and the steps still buf
   CHECK(file.read("/centerlines/beam1").shape == std::vector<hsize_t>{steps, 5, 3});
   const auto root = spar::test::XmlReader::parse(spar::test::read_text(folder.file("run.xmf")));
   CHECK(root.one("Domain").one("Grid").all("Grid").size() == std::size_t{steps});
+}
+
+TEST_CASE("An error of the writer thread making the file surfaces at the next call", "[output]") {
+  // The constructor only checks that the path can be written; the writer thread makes the file
+  // and its datasets, which need more than the 4 kB the file may grow to here (EFBIG, as on a
+  // full disk). The constructor returns; the error is rethrown by the next append (once the
+  // writer thread has met it: steps_flushed() waits for that without rethrowing), flush,
+  // write_attribute or close. In a child process: see run_in_child.
+  const spar::test::ScratchFolder folder("thread_creation_error");
+  const std::string messages = run_in_child([&] {
+    const FileSizeLimit limit(4096);
+    std::string text;
+    const std::vector<std::pair<std::string, std::function<void(ResultsWriter&)>>> calls = {
+        {"append", [](ResultsWriter& w) { w.append(SampleStep(0).step); }},
+        {"flush", [](ResultsWriter& w) { w.flush(); }},
+        {"write_attribute", [](ResultsWriter& w) { w.write_attribute("h", 1e-4); }},
+        {"close", [](ResultsWriter& w) { w.close(); }}};
+    for (const auto& [name, call] : calls) {
+      ResultsWriter writer(folder.file(name + ".h5"), spar::test::sample_layout(), 4);
+      text += name + ": steps on disk " + std::to_string(writer.steps_flushed()) + ", ";
+      try {
+        call(writer);
+        text += "no error\n";
+      } catch (const spar::Error& e) {
+        text += std::string(e.what()) + "\n";
+      }
+      try {
+        writer.close();
+        text += name + ": then closed\n";
+      } catch (const spar::Error& e) {
+        text += name + ": close threw " + e.what() + "\n";
+      }
+    }
+    return text;
+  });
+  INFO(messages);
+  for (const std::string call : {"append", "flush", "write_attribute", "close"}) {
+    const std::string path = folder.file(call + ".h5");
+    CHECK_THAT(messages, Contains(call + ": steps on disk 0, spar: core::ResultsWriter::ResultsWriter(" + path +
+                                  "): HDF5 failed to") &&
+                             Contains(call + ": then closed\n"));
+  }
+  CHECK_THAT(messages, !Contains("unexpected exception") && !Contains("no error"));
 }

@@ -14,7 +14,8 @@ namespace spar::core {
 
 class Hdf5File {
 public:
-  /// Creates (truncates) the file; throws spar::Error if it cannot.
+  /// Creates (truncates) the file; throws spar::Error if it cannot, or if another writer of this
+  /// program (an Hdf5File or a ResultsWriter not yet closed) is writing it.
   explicit Hdf5File(const std::string& path);
   ~Hdf5File();
   Hdf5File(const Hdf5File&) = delete;
@@ -31,6 +32,7 @@ public:
 private:
   long long file_;  // hid_t, kept out of the header so users need no HDF5 include path
   std::string path_;
+  std::string claim_;  // its key among the files this program's writers write (lib/src/written_files.hpp)
 };
 
 }  // namespace spar::core

@@ -4,9 +4,9 @@
 /// per step) and an XDMF sidecar that lets ParaView play the deforming beams as an animation.
 /// Steps are buffered and written in blocks, each followed by H5Fflush and an append of the
 /// block's steps to the sidecar, so a run that dies keeps every step up to its last flush and
-/// both files still open; a flush costs the same at step 100 and at step 10⁶. The blocks are
-/// written on a thread of the writer's own (see ResultsWriter), so the run does not wait for
-/// the disk.
+/// both files still open; a flush costs the same at step 100 and at step 10⁶. The files are
+/// made and the blocks written on a thread of the writer's own (see ResultsWriter), so the run
+/// does not wait for the disk.
 /// The schema (dataset names, shapes, units) is in docs/output.md, "Time histories".
 
 #include <spar/core/configuration.hpp>
@@ -108,21 +108,27 @@ struct ResultsStep {
 /// after each flush both files are complete up to the flushed step.
 ///
 /// Threading: the constructor starts one writer thread, which lives until close() or the
-/// destructor joins it. append() copies the step into the buffers of the block being filled; a
+/// destructor joins it, and whose jobs run in the order of the calls: first making the files
+/// (the HDF5 file, its datasets, the sidecar), then the root attributes of write_attribute and
+/// the blocks of steps. append() copies the step into the buffers of the block being filled; a
 /// full block is handed to the writer thread, which writes it, H5Fflush-es and appends it to the
 /// sidecar while the caller fills the next one (two blocks in memory at most: append waits only
-/// if the writer thread is still writing the previous block). After the constructor every HDF5
-/// call of the writer is made on its thread, or on the caller's with the writer thread idle
-/// (write_attribute, write_constant, close), under the library's HDF5 lock (HDF5 is not assumed
-/// thread-safe: two writers may run side by side). An error of the writer thread (a full disk,
-/// an HDF5 failure) is rethrown as its spar::Error by the next append, flush, close or write_*
-/// call, which closes the file first: the writer then writes nothing more. A ResultsWriter is
-/// used from one thread at a time, like any object without a lock.
+/// if the writer thread is still writing the previous block). Every HDF5 call of the writer is
+/// made on its thread, or on the caller's with the writer thread idle (write_constant, close),
+/// under the library's HDF5 lock (HDF5 is not assumed thread-safe: two writers may run side by
+/// side). An error of the writer thread (a full disk, an HDF5 failure) is rethrown as its
+/// spar::Error by the next append, flush, close or write_* call, which closes the file first:
+/// the writer then writes nothing more. A ResultsWriter is used from one thread at a time, like
+/// any object without a lock.
 class ResultsWriter {
 public:
-  /// Creates (truncates) the HDF5 file and every dataset of `layout` with zero steps, and writes
-  /// an empty sidecar. Steps are written in blocks of `flush_every` (≥ 1). Throws spar::Error
-  /// naming the path and the reason if the layout is invalid or the file cannot be created.
+  /// Checks `layout` and that both paths can be written, then has the writer thread create
+  /// (truncate) the HDF5 file and every dataset of `layout` with zero steps, and write an empty
+  /// sidecar; flush() waits for that. Steps are written in blocks of `flush_every` (≥ 1). Throws
+  /// spar::Error naming the path and the reason if the layout is invalid, a file cannot be
+  /// opened for writing or another writer of this program (a ResultsWriter not yet closed, an
+  /// Hdf5File) is writing it; a later failure of HDF5 making the file (a full disk) is rethrown
+  /// by the next call, like any error of the writer thread.
   ResultsWriter(const std::string& h5_path, ResultsLayout layout, int flush_every = 100);
   /// Closes the file (see close()); reports a failure on stderr instead of throwing.
   ~ResultsWriter();
@@ -131,9 +137,11 @@ public:
   ResultsWriter(const ResultsWriter&) = delete;
   ResultsWriter& operator=(const ResultsWriter&) = delete;
 
-  /// Run metadata: a scalar attribute of the root group (replaced if it exists), flushed at once:
-  /// a double, a 64-bit integer (counters such as steps or factorizations) or a variable-length
-  /// UTF-8 string (h5py reads str). State the unit in the name or in docs/output.md.
+  /// Run metadata: a scalar attribute of the root group (replaced if it exists): a double, a
+  /// 64-bit integer (counters such as steps or factorizations) or a variable-length UTF-8 string
+  /// (h5py reads str). State the unit in the name or in docs/output.md. Written and flushed by
+  /// the writer thread after the blocks handed over before it, without waiting for them;
+  /// spar::Error at once for a name of 0 or more than 65 000 characters.
   void write_attribute(const std::string& name, double value);
   void write_attribute(const std::string& name, std::int64_t value);
   void write_attribute(const std::string& name, int value) { write_attribute(name, std::int64_t{value}); }
