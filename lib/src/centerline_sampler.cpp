@@ -6,27 +6,30 @@
 
 namespace spar::core {
 
-CenterlineSampler::CenterlineSampler(const GeometricallyExactBeam& beam, int points) : beam_(&beam) {
+CenterlineSampler::CenterlineSampler(const GeometricallyExactBeam& beam, int points)
+    : beam_(&beam), degree_(beam.degree()) {
   if (points < 2)
     throw Error("a centerline sample needs at least 2 points, got " + std::to_string(points),
                 "core::CenterlineSampler", "ask for 2 or more points");
   const iga::KnotVector& U = beam.reference_centerline().knots();
-  points_.reserve(static_cast<std::size_t>(points));
-  for (int i = 0; i < points; ++i)
-    points_.push_back(beam.centerline_point(U.first() + (U.last() - U.first()) * i / (points - 1), 0));
+  first_node_.reserve(static_cast<std::size_t>(points));
+  shape_.reserve(static_cast<std::size_t>(points) * static_cast<std::size_t>(degree_ + 1));
+  for (int i = 0; i < points; ++i) {
+    const CenterlinePoint point = beam.centerline_point(U.first() + (U.last() - U.first()) * i / (points - 1), 0);
+    // The point's control points are the beam's (centerline_point found them), so its nodes are
+    // first_node() + index, taken without node()'s range check.
+    first_node_.push_back(beam.first_node() + point.first_control_point);
+    for (int I = 0; I <= degree_; ++I) shape_.push_back(point.shape(0, I));
+  }
 }
 
 template <class NodeValue>
 Eigen::MatrixXd CenterlineSampler::combine(const NodeValue& value) const {
   Eigen::MatrixXd samples(size(), 3);
-  // The points' control points are the beam's (centerline_point found them), so their nodes are
-  // taken as first_node() + index without node()'s range check: an out-of-line call per product
-  // was a third of the cost of a recorded state's centerlines.
-  const int first_node = beam_->first_node(), degree = beam_->degree();
-  for (int i = 0; i < size(); ++i) {
-    const CenterlinePoint& point = points_[i];
+  const double* N = shape_.data();
+  for (int i = 0; i < size(); ++i, N += degree_ + 1) {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
-    for (int I = 0; I <= degree; ++I) x += point.shape(0, I) * value(first_node + point.first_control_point + I);
+    for (int I = 0; I <= degree_; ++I) x += N[I] * value(first_node_[i] + I);
     samples.row(i) = x.transpose();
   }
   return samples;

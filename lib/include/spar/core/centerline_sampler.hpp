@@ -21,7 +21,7 @@ public:
   CenterlineSampler(const GeometricallyExactBeam& beam, int points);
 
   /// The number of points.
-  int size() const { return static_cast<int>(points_.size()); }
+  int size() const { return static_cast<int>(first_node_.size()); }
   /// The centerline x(u_i) = Σ_I N_I(u_i) x_I (003 eq. 39), one row per point.
   Eigen::MatrixXd positions(const Configuration& q) const;
   /// Its velocity ẋ(u_i) = Σ_I N_I(u_i) ẋ_I (x is linear in the node positions), one row per
@@ -34,7 +34,12 @@ private:
   Eigen::MatrixXd combine(const NodeValue& value) const;
 
   const GeometricallyExactBeam* beam_;
-  std::vector<CenterlinePoint> points_;
+  int degree_;
+  /// Per point i: the global node of its first control point, and N_{first+I}(u_i) for
+  /// I = 0 … degree at shape_[i (degree + 1) + I] — the values alone, not a whole CenterlinePoint
+  /// (whose basis table is sized for the highest degree and every derivative: ~1 KB a point).
+  std::vector<int> first_node_;
+  std::vector<double> shape_;
 };
 
 }  // namespace spar::core
