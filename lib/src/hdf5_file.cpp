@@ -27,9 +27,7 @@ void check(herr_t status, const std::string& what, const std::string& path) {
 
 Hdf5File::Hdf5File(const std::string& path)
     : path_(path), claim_(detail::claim_written_file(path, "core::Hdf5File(" + path + ")")) {
-  const std::lock_guard<std::mutex> hdf5(detail::hdf5_mutex());
-  detail::start_hdf5();
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become spar::Error, not stderr noise
+  const auto hdf5 = detail::hdf5_calls();
   file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0) detail::release_written_file(claim_);  // the destructor does not run
   check(static_cast<herr_t>(file_ < 0 ? -1 : 0), "create the file", path);

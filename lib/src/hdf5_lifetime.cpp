@@ -14,7 +14,7 @@ namespace {
 
 std::atomic<bool> hdf5_failed{false};
 
-/// The exit handler: HDF5's own cleanup, unless a write of ours failed (hdf5_lifetime.hpp).
+/// The exit handler: HDF5's own cleanup, unless an HDF5 call of ours failed (hdf5_lifetime.hpp).
 void end_hdf5() {
   if (hdf5_failed.load()) return;
   const std::lock_guard<std::mutex> hdf5(hdf5_mutex());
@@ -34,5 +34,12 @@ void start_hdf5() {
 }
 
 void note_hdf5_failure() noexcept { hdf5_failed.store(true); }
+
+std::unique_lock<std::mutex> hdf5_calls() {
+  std::unique_lock<std::mutex> hdf5(hdf5_mutex());
+  start_hdf5();
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  return hdf5;
+}
 
 }  // namespace spar::core::detail

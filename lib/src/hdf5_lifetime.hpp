@@ -12,6 +12,8 @@
 /// failed — then HDF5 is left as it is, and the process ends without its cleanup (the data
 /// flushed before the failure are on disk either way).
 
+#include <mutex>
+
 namespace spar::core::detail {
 
 /// Starts HDF5 on the first call; later calls do nothing. To be called with hdf5_mutex() held,
@@ -21,5 +23,10 @@ void start_hdf5();
 
 /// Records that an HDF5 call of the library failed: HDF5 is not ended at exit.
 void note_hdf5_failure() noexcept;
+
+/// How the library enters HDF5 on any thread: takes hdf5_mutex() (hdf5_lock.hpp), starts HDF5
+/// (start_hdf5) and turns HDF5's printing of errors off, as the failures become spar::Error
+/// (the setting is per thread in a thread-safe HDF5). HDF5 calls follow while the lock is held.
+std::unique_lock<std::mutex> hdf5_calls();
 
 }  // namespace spar::core::detail

@@ -3,7 +3,6 @@
 #include "fresh_file.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_lifetime.hpp"
-#include "hdf5_lock.hpp"
 #include "written_files.hpp"
 #include "xdmf_sidecar.hpp"
 
@@ -300,18 +299,6 @@ struct ResultsWriter::Impl {
       throw Error("the results file is closed", where(function), "call " + function + " before close()");
   }
 
-  /// Takes the library's HDF5 lock for HDF5 calls on this thread, HDF5 started by the library
-  /// (hdf5_lifetime.hpp: before any HDF5 call, the first of which would start it with its own
-  /// exit handler), with HDF5's printing of errors off: they become spar::Error, not stderr
-  /// noise (the setting is per thread in a thread-safe HDF5, and the file is made on the writer
-  /// thread, used on both).
-  static std::unique_lock<std::mutex> hdf5_calls() {
-    std::unique_lock<std::mutex> hdf5(detail::hdf5_mutex());
-    detail::start_hdf5();
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    return hdf5;
-  }
-
   /// Queues the root attribute `attribute` for the writer thread, after the jobs queued before
   /// it. A name HDF5 would refuse is refused here; an HDF5 failure of the write is rethrown
   /// like any error of the writer thread.
@@ -419,7 +406,7 @@ struct ResultsWriter::Impl {
   /// the sidecar's topologies and the schema, H5Fflush, then the empty sidecar.
   void create_files() {
     {
-      const auto hdf5 = hdf5_calls();
+      const auto hdf5 = detail::hdf5_calls();
       create_file();
       for (Series& s : series) create_dataset(s);
       write_topologies();
@@ -432,7 +419,7 @@ struct ResultsWriter::Impl {
   /// The writer thread's job for a root attribute: writes it, replacing one of the same name,
   /// and flushes the file.
   void write_root_attribute(const WriteAttribute& attribute) {
-    const auto hdf5 = hdf5_calls();
+    const auto hdf5 = detail::hdf5_calls();
     herr_t status = 0;
     if (const auto* number = std::get_if<double>(&attribute.value))
       status = detail::write_scalar_attribute(file, attribute.name, H5T_NATIVE_DOUBLE, number);
@@ -526,7 +513,7 @@ struct ResultsWriter::Impl {
   /// (series 0 holds their times), so both files are complete up to the block when it returns.
   void write_and_flush(const Block& b) {
     {
-      const auto hdf5 = hdf5_calls();
+      const auto hdf5 = detail::hdf5_calls();
       write_block(b);
       check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "flush");
     }
@@ -657,7 +644,7 @@ struct ResultsWriter::Impl {
     stop_writer();
     closed = true;
     sidecar.reset();
-    const auto hdf5 = hdf5_calls();
+    const auto hdf5 = detail::hdf5_calls();
     bool ok = true;
     for (Series& s : series)
       if (s.dataset >= 0) {
@@ -902,7 +889,7 @@ void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixX
   Impl& impl = *impl_;
   impl.require_open("write_constant");
   impl.wait_idle();
-  const auto hdf5 = Impl::hdf5_calls();
+  const auto hdf5 = detail::hdf5_calls();
   if (H5Lexists(impl.file, name.c_str(), H5P_DEFAULT) > 0)
     throw Error("the file already holds an object named " + name, impl.where("write_constant"),
                 "write each constant once, under a name not used by the time histories (docs/output.md)");
