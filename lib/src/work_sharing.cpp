@@ -18,6 +18,15 @@ std::uint64_t job_word(std::uint32_t generation, int unclaimed) {
   return (std::uint64_t{generation} << 32) | static_cast<std::uint32_t>(unclaimed);
 }
 
+/// Polls `done` for at most 50 µs: the time a thread watches for a job, or for the end of one,
+/// before it sleeps on a futex (whose wake-up takes tens of µs on this machine).
+template <class Done>
+void watch(const Done& done) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(50);
+  while (!done() && std::chrono::steady_clock::now() < end) {
+  }
+}
+
 }  // namespace
 
 WorkSharing& WorkSharing::shared() {
@@ -72,13 +81,11 @@ void WorkSharing::run_chunk(int index, int thread) {
 void WorkSharing::helper_loop(int thread) {
   std::uint32_t seen = 0;
   for (;;) {
-    // An assembly is two jobs in a row (the blocks, then the values): a helper that watches for
-    // the next job for a few tens of µs before it sleeps joins it at once instead of after a
-    // futex wake-up. The watch is bounded, so a loaded machine loses at most that per job.
-    const auto watch_end = std::chrono::steady_clock::now() + std::chrono::microseconds(50);
-    while (generation_.load(std::memory_order_acquire) == seen &&
-           std::chrono::steady_clock::now() < watch_end) {
-    }
+    // Jobs come in bursts (an assembly, then the factorization and the next assembly tens of µs
+    // later): a helper that watches for the next job for a while before it sleeps joins it at
+    // once instead of after a futex wake-up. The watch is bounded, so a loaded machine loses at
+    // most that per job.
+    watch([&] { return generation_.load(std::memory_order_acquire) != seen; });
     generation_.wait(seen, std::memory_order_acquire);
     if (stop_.load()) return;
     seen = generation_.load(std::memory_order_acquire);
@@ -108,8 +115,9 @@ void WorkSharing::for_each_chunk(int count, int chunk, const Body& body) {
   const auto run_inline = [&] {
     for (int begin = 0; begin < count; begin += chunk) body(begin, std::min(count, begin + chunk), 0);
   };
-  // A team busy with another job (another thread's, or the body calling back in) is not shared.
-  if (helpers_.empty() || busy_.exchange(true, std::memory_order_acquire)) {
+  // One chunk has nothing to share; a team busy with another job (another thread's, or the body
+  // calling back in) is not shared.
+  if (count <= chunk || helpers_.empty() || busy_.exchange(true, std::memory_order_acquire)) {
     run_inline();
     return;
   }
@@ -138,7 +146,10 @@ void WorkSharing::for_each_chunk(int count, int chunk, const Body& body) {
   const auto start = std::chrono::steady_clock::now();
   for (int index; (index = claim(generation)) >= 0;) run_chunk(index, 0);
   const auto own_done = std::chrono::steady_clock::now();
-  // Only chunks that a helper has claimed and is running are left to wait for.
+  // Only chunks that a helper has claimed and is running are left to wait for. They usually end
+  // within a chunk's time: the caller watches for that before it sleeps, since a futex wake-up
+  // takes longer than a small job (the slider-crank's 17 blocks take ~60 µs).
+  watch([&] { return finished_.load(std::memory_order_acquire) == chunks_; });
   for (int finished; (finished = finished_.load(std::memory_order_acquire)) != chunks_;)
     finished_.wait(finished, std::memory_order_acquire);
   adapt(own_done - start, std::chrono::steady_clock::now() - own_done);

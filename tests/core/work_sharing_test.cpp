@@ -1,5 +1,6 @@
 // WorkSharing: every index runs exactly once whatever the chunking, per-thread indices stay in
-// range, a body's exception reaches the caller, and a body that calls back in runs inline.
+// range, a body's exception reaches the caller, and a body that calls back in or a job of one
+// chunk runs inline.
 #include <spar/core/work_sharing.hpp>
 #include <spar/error.hpp>
 
@@ -56,4 +57,23 @@ TEST_CASE("a body that calls for_each_chunk again runs the inner loop on its own
     });
   });
   CHECK(inner == 80);
+}
+
+TEST_CASE("a job of one chunk runs on the calling thread", "[core][work_sharing]") {
+  // Nothing to share: the helpers are not woken, the body sees thread 0 with the whole range.
+  WorkSharing team(2);
+  for (const int count : {1, 5, 64}) {
+    int calls = 0, first = -1, last = -1, thread_seen = -1;
+    team.for_each_chunk(count, 64, [&](int begin, int end, int thread) {
+      ++calls;
+      first = begin;
+      last = end;
+      thread_seen = thread;
+    });
+    CAPTURE(count);
+    CHECK(calls == 1);
+    CHECK(first == 0);
+    CHECK(last == count);
+    CHECK(thread_seen == 0);
+  }
 }

@@ -11,7 +11,8 @@
 /// "Scaling"). Here the caller works through the chunks itself; a helper that wakes late finds
 /// none left and sleeps again, and the caller waits only for chunks a helper has taken and is
 /// running. Between jobs a helper watches for the next one for 50 µs (an assembly is two jobs in
-/// a row), then sleeps on a futex (std::atomic::wait).
+/// a row), then sleeps on a futex (std::atomic::wait); the caller likewise watches for the
+/// helpers' last chunks for 50 µs before it sleeps.
 
 #include <algorithm>
 #include <atomic>
@@ -53,12 +54,12 @@ public:
   }
 
   /// Runs body over [0, count) in chunks of `chunk` indices (the last one shorter) and returns
-  /// when every chunk has run. The caller runs them all itself (as thread 0) when the team is
-  /// busy with another caller's job, and for a few jobs after one in which it waited long for a
-  /// helper (a helper that lost its core to another process in the middle of a chunk: the
-  /// loaded machine, where sharing costs more than it saves). The first exception thrown by body
-  /// is rethrown here once every running chunk has finished; chunks not yet started are then
-  /// skipped.
+  /// when every chunk has run. The caller runs them all itself (as thread 0) when there is only
+  /// one chunk, when the team is busy with another caller's job, and for a few jobs after one in
+  /// which it waited long for a helper (a helper that lost its core to another process in the
+  /// middle of a chunk: the loaded machine, where sharing costs more than it saves). The first
+  /// exception thrown by body is rethrown here once every running chunk has finished; chunks not
+  /// yet started are then skipped.
   void for_each_chunk(int count, int chunk, const Body& body);
 
 private:
