@@ -1,5 +1,4 @@
 #include <spar/core/hdf5_file.hpp>
-#include <spar/error.hpp>
 
 #include "hdf5_attributes.hpp"
 #include "hdf5_lifetime.hpp"
@@ -16,11 +15,8 @@ namespace spar::core {
 namespace {
 
 void check(herr_t status, const std::string& what, const std::string& path) {
-  if (status < 0) {
-    detail::note_hdf5_failure();
-    throw Error("HDF5 failed to " + what, "core::Hdf5File(" + path + ")",
-                "check that the output folder exists and is writable, and the disk is not full");
-  }
+  detail::check_hdf5(status, what, "core::Hdf5File(" + path + ")",
+                     "check that the output folder exists and is writable, and the disk is not full");
 }
 
 }  // namespace

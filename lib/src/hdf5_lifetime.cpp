@@ -2,6 +2,8 @@
 
 #include "hdf5_lock.hpp"
 
+#include <spar/error.hpp>
+
 #include <hdf5.h>
 
 #include <atomic>
@@ -21,8 +23,7 @@ void end_hdf5() {
   H5close();
 }
 
-}  // namespace
-
+/// Starts HDF5 on the first call; later calls do nothing. Called with hdf5_mutex() held.
 void start_hdf5() {
   static const bool started = [] {
     H5dont_atexit();  // before HDF5's first call, so that it registers no handler of its own
@@ -33,7 +34,15 @@ void start_hdf5() {
   static_cast<void>(started);
 }
 
+}  // namespace
+
 void note_hdf5_failure() noexcept { hdf5_failed.store(true); }
+
+void check_hdf5(herr_t status, const std::string& what, const std::string& where, const std::string& fix) {
+  if (status >= 0) return;
+  note_hdf5_failure();
+  throw Error("HDF5 failed to " + what, where, fix);
+}
 
 std::unique_lock<std::mutex> hdf5_calls() {
   std::unique_lock<std::mutex> hdf5(hdf5_mutex());

@@ -12,21 +12,25 @@
 /// failed — then HDF5 is left as it is, and the process ends without its cleanup (the data
 /// flushed before the failure are on disk either way).
 
+#include <hdf5.h>
+
 #include <mutex>
+#include <string>
 
 namespace spar::core::detail {
 
-/// Starts HDF5 on the first call; later calls do nothing. To be called with hdf5_mutex() held,
-/// before the first HDF5 call of a results writer or file. When code outside spar started HDF5
-/// earlier, HDF5's own handler is already registered and a failed write still crashes the exit.
-void start_hdf5();
+/// How the library enters HDF5 on any thread: takes hdf5_mutex() (hdf5_lock.hpp), starts HDF5
+/// at the first call (without HDF5's exit handler, with ours) and turns HDF5's printing of
+/// errors off, as the failures become spar::Error (the setting is per thread in a thread-safe
+/// HDF5). HDF5 calls follow while the lock is held. When code outside spar started HDF5 earlier,
+/// HDF5's own handler is already registered and a failed write still crashes the exit.
+std::unique_lock<std::mutex> hdf5_calls();
 
 /// Records that an HDF5 call of the library failed: HDF5 is not ended at exit.
 void note_hdf5_failure() noexcept;
 
-/// How the library enters HDF5 on any thread: takes hdf5_mutex() (hdf5_lock.hpp), starts HDF5
-/// (start_hdf5) and turns HDF5's printing of errors off, as the failures become spar::Error
-/// (the setting is per thread in a thread-safe HDF5). HDF5 calls follow while the lock is held.
-std::unique_lock<std::mutex> hdf5_calls();
+/// The library's check of an HDF5 call: for a negative `status`, records the failure
+/// (note_hdf5_failure) and throws spar::Error("HDF5 failed to " + what, where, fix).
+void check_hdf5(herr_t status, const std::string& what, const std::string& where, const std::string& fix);
 
 }  // namespace spar::core::detail

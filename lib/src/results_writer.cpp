@@ -287,11 +287,7 @@ struct ResultsWriter::Impl {
   std::string where(const std::string& function) const { return "core::ResultsWriter::" + function + "(" + path + ")"; }
 
   void check(herr_t status, const std::string& what, const std::string& function) const {
-    if (status < 0) {
-      detail::note_hdf5_failure();
-      throw Error("HDF5 failed to " + what, where(function),
-                  "check that the output folder is writable and the disk is not full");
-    }
+    detail::check_hdf5(status, what, where(function), "check that the output folder is writable and the disk is not full");
   }
 
   void require_open(const std::string& function) const {
