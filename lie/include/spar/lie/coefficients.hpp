@@ -61,12 +61,32 @@ constexpr std::array<long double, N> cotangent_family_series() {
   return s;
 }
 
+/// The table s rounded to Scalar.
+template <class Scalar, std::size_t N>
+constexpr std::array<Scalar, N> rounded(const std::array<long double, N>& s) {
+  std::array<Scalar, N> r{};
+  for (std::size_t k = 0; k < N; ++k) r[k] = static_cast<Scalar>(s[k]);
+  return r;
+}
+
+/// A series table in the precision of Scalar, rounded once at compile time: rounded at every
+/// call, each term cost an x87 load and store (~40 % of a beam Gauss point's Hessian terms).
+/// Rounding to nearest either way, the values are the same bit for bit.
+template <class Scalar, const auto& series>
+inline constexpr auto in_precision = rounded<Scalar>(series);
+
 /// Σ s_k x^k by Horner's rule, in the precision of Scalar.
 template <class Scalar, std::size_t N>
-Scalar horner(const std::array<long double, N>& s, Scalar x) {
-  Scalar sum = static_cast<Scalar>(s[N - 1]);
-  for (std::size_t k = N - 1; k-- > 0;) sum = sum * x + static_cast<Scalar>(s[k]);
+Scalar horner(const std::array<Scalar, N>& s, Scalar x) {
+  Scalar sum = s[N - 1];
+  for (std::size_t k = N - 1; k-- > 0;) sum = sum * x + s[k];
   return sum;
+}
+
+/// The series `series` at x = θ², in the precision of Scalar.
+template <class Scalar, const auto& series>
+Scalar series_at(Scalar theta) {
+  return horner(in_precision<Scalar, series>, theta * theta);
 }
 
 // Series tables. Lengths are chosen so that the truncation error at the switch point is below
@@ -98,17 +118,17 @@ inline constexpr double b_switch = 2.25;  // b1, b2, b3
 
 /// The Taylor series of each coefficient in x = θ², exact to round-off for θ < θₛ.
 namespace series {
-template <class Scalar> Scalar a1(Scalar theta) { return detail::horner(detail::a1_series, theta * theta); }
-template <class Scalar> Scalar a2(Scalar theta) { return detail::horner(detail::a2_series, theta * theta); }
-template <class Scalar> Scalar a3(Scalar theta) { return detail::horner(detail::a3_series, theta * theta); }
-template <class Scalar> Scalar a4(Scalar theta) { return detail::horner(detail::a4_series, theta * theta); }
-template <class Scalar> Scalar c1(Scalar theta) { return detail::horner(detail::c1_series, theta * theta); }
-template <class Scalar> Scalar c2(Scalar theta) { return detail::horner(detail::c2_series, theta * theta); }
-template <class Scalar> Scalar c3(Scalar theta) { return detail::horner(detail::c3_series, theta * theta); }
-template <class Scalar> Scalar c6(Scalar theta) { return detail::horner(detail::c6_series, theta * theta); }
-template <class Scalar> Scalar b1(Scalar theta) { return detail::horner(detail::b1_series, theta * theta); }
-template <class Scalar> Scalar b2(Scalar theta) { return detail::horner(detail::b2_series, theta * theta); }
-template <class Scalar> Scalar b3(Scalar theta) { return detail::horner(detail::b3_series, theta * theta); }
+template <class Scalar> Scalar a1(Scalar theta) { return detail::series_at<Scalar, detail::a1_series>(theta); }
+template <class Scalar> Scalar a2(Scalar theta) { return detail::series_at<Scalar, detail::a2_series>(theta); }
+template <class Scalar> Scalar a3(Scalar theta) { return detail::series_at<Scalar, detail::a3_series>(theta); }
+template <class Scalar> Scalar a4(Scalar theta) { return detail::series_at<Scalar, detail::a4_series>(theta); }
+template <class Scalar> Scalar c1(Scalar theta) { return detail::series_at<Scalar, detail::c1_series>(theta); }
+template <class Scalar> Scalar c2(Scalar theta) { return detail::series_at<Scalar, detail::c2_series>(theta); }
+template <class Scalar> Scalar c3(Scalar theta) { return detail::series_at<Scalar, detail::c3_series>(theta); }
+template <class Scalar> Scalar c6(Scalar theta) { return detail::series_at<Scalar, detail::c6_series>(theta); }
+template <class Scalar> Scalar b1(Scalar theta) { return detail::series_at<Scalar, detail::b1_series>(theta); }
+template <class Scalar> Scalar b2(Scalar theta) { return detail::series_at<Scalar, detail::b2_series>(theta); }
+template <class Scalar> Scalar b3(Scalar theta) { return detail::series_at<Scalar, detail::b3_series>(theta); }
 }  // namespace series
 
 /// The closed forms (003 eqs. 3, 11, 27), accurate for θ ≥ θₛ.
