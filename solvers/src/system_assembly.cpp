@@ -6,6 +6,7 @@
 #include <spar/error.hpp>
 
 #include <algorithm>
+#include <chrono>
 
 namespace spar::solvers::detail {
 
@@ -205,6 +206,13 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
                               bool with_energies) {
   const int element_count = static_cast<int>(element_work_.size());
   const int total = element_count + static_cast<int>(constraints_.size());
+  // `automatic` on a model too small for the parallel evaluation to pay for certain: the faster
+  // of the two as timed (execution_choice.hpp).
+  const bool timed = execution_ == core::AssemblyExecution::automatic &&
+                     !pattern_->runs_parallel(execution_) && core::WorkSharing::shared().thread_count() > 1;
+  ExecutionChoice& choice = c ? matrix_execution_ : residual_execution_;
+  const bool parallel = timed ? choice.parallel() : pattern_->runs_parallel(execution_);
+  const auto start = std::chrono::steady_clock::now();
   if (c) {
     pattern_->assemble(
         [&](int id, Eigen::MatrixXd& K) {
@@ -213,15 +221,16 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
           else
             compute_constraint(id - element_count, in, lambda, c, chart, increment, &K);
         },
-        execution_);
+        parallel ? core::AssemblyExecution::parallel : core::AssemblyExecution::serial);
   } else {
-    for_each_index(total, pattern_->runs_parallel(execution_), [&](int id) {
+    for_each_index(total, parallel, [&](int id) {
       if (id < element_count)
         compute_element(id, in, nullptr, chart, increment, false, nullptr, with_energies);
       else
         compute_constraint(id - element_count, in, lambda, nullptr, chart, increment, nullptr);
     });
   }
+  if (timed) choice.record(std::chrono::steady_clock::now() - start);
   // Gather: dynamic rows Σ r_e + Σ Bᵀλ and the size of their terms; constraint rows Φ.
   residual_.setZero();
   scale_.setZero();

@@ -9,6 +9,8 @@
 #include <spar/core/sparse_assembly.hpp>
 #include <spar/joints/constraint.hpp>
 
+#include "execution_choice.hpp"
+
 #include <Eigen/Core>
 
 #include <memory>
@@ -134,6 +136,9 @@ private:
   core::Model& model_;
   std::vector<joints::Constraint*> constraints_;
   core::AssemblyExecution execution_;
+  /// For `automatic` below core::parallel_assembly_min_blocks: serial or parallel as timed, for
+  /// the evaluations with a matrix and for those of the residual alone.
+  ExecutionChoice matrix_execution_, residual_execution_;
   int dof_count_ = 0, multiplier_count_ = 0;
   std::vector<ElementWork> element_work_;
   std::vector<ConstraintWork> constraint_work_;

@@ -1,6 +1,7 @@
 // The parallel assembly inside real solves is bitwise the serial one: a pinned flexible pendulum
 // of 240 cubic elements (past core::parallel_assembly_min_blocks, so `automatic` runs in parallel
-// too) and a spherical joint, stepped with each execution.
+// too) and a spherical joint, stepped with each execution; and one of 20 elements, which
+// `automatic` evaluates serially or in parallel as it times them (solvers/src/execution_choice.hpp).
 #include <spar/core/sparse_assembly.hpp>
 #include <spar/core/work_sharing.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
@@ -22,12 +23,12 @@ struct Run {
   long iterations = 0;
 };
 
-Run run(core::AssemblyExecution execution) {
-  test::FlexiblePendulum p = test::flexible_pendulum(240);
+Run run(core::AssemblyExecution execution, int elements = 240, int steps = 8) {
+  test::FlexiblePendulum p = test::flexible_pendulum(elements);
   solvers::GeneralizedAlpha integrator(p.model, std::move(p.joints),
                                        {.time_step = 2.5e-4, .tolerance = 1e-20, .constraint_tolerance = 1e-12,
                                         .residual_tolerance = 1e-8, .assembly = execution});
-  for (int n = 0; n < 8; ++n) integrator.step();
+  for (int n = 0; n < steps; ++n) integrator.step();
   return {p.model.state(), integrator.velocity(), integrator.multipliers(),
           integrator.counters().newton_iterations};
 }
@@ -59,4 +60,21 @@ TEST_CASE("parallel and automatic assembly step a 240-element pinned beam bitwis
     CHECK(other.multipliers == serial.multipliers);
     CHECK(other.iterations == serial.iterations);
   }
+}
+
+TEST_CASE("automatic assembly of a 20-element pendulum, serial and parallel as timed, steps bitwise as serial does",
+          "[solvers][openmp]") {
+  // 60 steps take 120 Newton iterations, each an evaluation with a matrix: the first round (nine
+  // serial, nine parallel), the 32 evaluations of its choice, the second round and 52 more.
+  if (core::WorkSharing::shared().thread_count() == 1) {
+    WARN("one thread (OMP_NUM_THREADS or a 1-core machine): every execution is the serial one");
+    return;
+  }
+  const Run serial = run(core::AssemblyExecution::serial, 20, 60);
+  const Run automatic = run(core::AssemblyExecution::automatic, 20, 60);
+  CHECK(serial.iterations >= 120);
+  CHECK(same_state(automatic.state, serial.state));
+  CHECK(automatic.velocity == serial.velocity);
+  CHECK(automatic.multipliers == serial.multipliers);
+  CHECK(automatic.iterations == serial.iterations);
 }

@@ -46,12 +46,15 @@ enum class AssemblyExecution {
   serial,    ///< one thread: each block computed and added in block order
   parallel,  ///< the caller and helper threads compute the blocks (core/work_sharing.hpp), then sum
              ///< every value from its contributions in block order
-  automatic  ///< parallel from `parallel_assembly_min_blocks` blocks up with > 1 thread, else serial
+  automatic  ///< parallel from `parallel_assembly_min_blocks` blocks up with > 1 thread, else serial;
+             ///< the solvers, below that count, run serial or parallel as they time the two
 };
 
 /// The block count from which AssemblyExecution::automatic runs in parallel. Measured on a 2-core
-/// machine with cubic beam elements (docs/performance.md, "Scaling"): below it waking the helper
-/// and storing the blocks cost more than the second thread saves.
+/// machine with cubic beam elements (docs/performance.md, "Scaling"): from it on the second thread
+/// always saves more than waking the helper and storing the blocks cost. Below it, it may or may
+/// not (the slider-crank's 17 blocks: 15 % faster on two idle cores, slower beside the examples'
+/// results writer), and the solvers time both (solvers/src/execution_choice.hpp).
 inline constexpr int parallel_assembly_min_blocks = 200;
 
 /// Computes the dense matrix of block `block_id` into `K`, which arrives sized rows × cols of

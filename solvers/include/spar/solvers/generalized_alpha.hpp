@@ -79,8 +79,9 @@ struct DynamicOptions {
   /// strain energy, and the step after the event is not shorter than ~1 µm over the slider's speed.
   bool locate_events = true;
   double event_tolerance = 1e-6;
-  /// Parallel from core::parallel_assembly_min_blocks elements and joints up (bitwise the serial
-  /// result either way; docs/performance.md, "Scaling").
+  /// Parallel from core::parallel_assembly_min_blocks elements and joints up; below, with more than
+  /// one thread, serial or parallel as the faster of the two is timed during the run (bitwise the
+  /// serial result either way; docs/performance.md, "Parallel assembly").
   core::AssemblyExecution assembly = core::AssemblyExecution::automatic;
   /// Consistent initial assembly by the first initialize() (docs/dynamics.md, "Initial
   /// assembly"): the positions are moved onto Φ(q, t₀) = 0 and the velocities onto

@@ -15,8 +15,9 @@ namespace spar::solvers {
 
 struct ModalOptions {
   int modes = 10;  ///< the lowest this many (fewer when the constrained model has fewer freedoms)
-  /// Parallel from core::parallel_assembly_min_blocks elements and joints up (bitwise the serial
-  /// result either way; docs/performance.md, "Scaling").
+  /// Parallel from core::parallel_assembly_min_blocks elements and joints up; below, with more than
+  /// one thread, serial or parallel as the faster of the two is timed during the run (bitwise the
+  /// serial result either way; docs/performance.md, "Parallel assembly").
   core::AssemblyExecution assembly = core::AssemblyExecution::automatic;
 };
 
