@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
+#include <thread>
 
 namespace spar::core {
 
@@ -19,12 +20,15 @@ std::uint64_t job_word(std::uint32_t generation, int unclaimed) {
 }
 
 /// Polls `done` for at most 50 µs: the time a thread watches for a job, or for the end of one,
-/// before it sleeps on a futex (whose wake-up takes tens of µs on this machine).
+/// before it sleeps on a futex (whose wake-up takes tens of µs on this machine). It yields between
+/// polls, so that another thread with work on this core (the examples' results writer) runs
+/// instead of waiting for the watch to end (the slider-crank's update run with its output at
+/// h = 1e-4, medians of 8 in two rounds: 209 → 190 and 199 → 193 ms; docs/performance.md,
+/// "Parallel assembly").
 template <class Done>
 void watch(const Done& done) {
   const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(50);
-  while (!done() && std::chrono::steady_clock::now() < end) {
-  }
+  while (!done() && std::chrono::steady_clock::now() < end) std::this_thread::yield();
 }
 
 }  // namespace

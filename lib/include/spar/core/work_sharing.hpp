@@ -11,8 +11,9 @@
 /// "Scaling"). Here the caller works through the chunks itself; a helper that wakes late finds
 /// none left and sleeps again, and the caller waits only for chunks a helper has taken and is
 /// running. Between jobs a helper watches for the next one for 50 µs (an assembly is two jobs in
-/// a row), then sleeps on a futex (std::atomic::wait); the caller likewise watches for the
-/// helpers' last chunks for 50 µs before it sleeps.
+/// a row), yielding its core to any other thread with work, then sleeps on a futex
+/// (std::atomic::wait); the caller likewise watches for the helpers' last chunks for 50 µs before
+/// it sleeps.
 
 #include <algorithm>
 #include <atomic>
