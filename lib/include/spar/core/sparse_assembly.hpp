@@ -53,8 +53,8 @@ enum class AssemblyExecution {
 /// The block count from which AssemblyExecution::automatic runs in parallel. Measured on a 2-core
 /// machine with cubic beam elements (docs/performance.md, "Scaling"): from it on the second thread
 /// always saves more than waking the helper and storing the blocks cost. Below it, it may or may
-/// not (the slider-crank's 17 blocks: 15 % faster on two idle cores, slower beside the examples'
-/// results writer), and the solvers time both (solvers/src/execution_choice.hpp).
+/// not (the slider-crank's 17 blocks: 23 against 39 µs on two idle cores, slower with a build
+/// running on the other core), and the solvers time both (solvers/src/execution_choice.hpp).
 inline constexpr int parallel_assembly_min_blocks = 200;
 
 /// Computes the dense matrix of block `block_id` into `K`, which arrives sized rows × cols of
