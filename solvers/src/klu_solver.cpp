@@ -104,6 +104,7 @@ private:
     common_.btf = 1;
     if (!substructured_.symbolic) throw_library_failure("klu_analyze_given", common_.status);
     system_ = A;
+    system_rows_ = row_order(A);
     preconditioner_values_.resize(pattern_.source.size());
   }
 
@@ -253,7 +254,7 @@ private:
   bool refined(Eigen::Ref<Eigen::VectorXd> x) {
     double previous = INFINITY;
     for (int sweep = 0;; ++sweep) {
-      const double omega = residual_and_backward_error(system_, x, right_hand_side_, correction_,
+      const double omega = residual_and_backward_error(system_, system_rows_, x, right_hand_side_, correction_,
                                                        magnitude_, row_scale_, row_scale_stale_);
       row_scale_stale_ = false;
       if (omega <= round_off_backward_error) return true;
@@ -328,6 +329,7 @@ private:
   SubstructuredPattern pattern_;
   /// A's pattern and the values of its last factorization (the refinement's residual).
   SparseMatrix system_;
+  RowOrder system_rows_;  ///< system_'s entries row by row, for the refinement's residual
   std::vector<double> preconditioner_values_;
   Eigen::VectorXd row_scale_, right_hand_side_, correction_, magnitude_;
   /// row_scale_ is that of the last matrix but one (a factorization since).

@@ -75,30 +75,52 @@ SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
   return p;
 }
 
-double residual_and_backward_error(const core::SparseMatrix& A,
+RowOrder row_order(const core::SparseMatrix& A) {
+  const int n = static_cast<int>(A.rows());
+  const int* column_starts = A.outerIndexPtr();
+  const int* row_indices = A.innerIndexPtr();
+  RowOrder order;
+  order.starts.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (int k = 0; k < column_starts[A.cols()]; ++k) ++order.starts[static_cast<std::size_t>(row_indices[k]) + 1];
+  for (int i = 0; i < n; ++i) order.starts[i + 1] += order.starts[i];
+  order.positions.resize(static_cast<std::size_t>(column_starts[A.cols()]));
+  order.columns.resize(order.positions.size());
+  std::vector<int> next(order.starts.begin(), order.starts.end() - 1);
+  for (int column = 0; column < A.cols(); ++column)
+    for (int k = column_starts[column]; k < column_starts[column + 1]; ++k) {
+      const int slot = next[row_indices[k]]++;
+      order.positions[slot] = k;
+      order.columns[slot] = column;
+    }
+  return order;
+}
+
+double residual_and_backward_error(const core::SparseMatrix& A, const RowOrder& rows,
                                    const Eigen::Ref<const Eigen::VectorXd>& x,
                                    const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::VectorXd& r,
                                    Eigen::VectorXd& magnitude, Eigen::VectorXd& row_scale,
                                    bool measure_rows) {
-  const int n = static_cast<int>(A.cols());
-  r = b;
-  magnitude = b.cwiseAbs();
-  if (measure_rows) row_scale.setZero(n);
-  for (int column = 0; column < n; ++column) {
-    const double xj = x(column);
-    for (int k = A.outerIndexPtr()[column]; k < A.outerIndexPtr()[column + 1]; ++k) {
-      const int row = A.innerIndexPtr()[k];
-      const double a = A.valuePtr()[k];
-      r(row) -= a * xj;
-      magnitude(row) += std::abs(a * xj);
-      if (measure_rows) row_scale(row) = std::max(row_scale(row), std::abs(a));
-    }
-  }
+  const int n = static_cast<int>(A.rows());
+  const double* values = A.valuePtr();
+  r.resize(n);
+  magnitude.resize(n);
+  if (measure_rows) row_scale.resize(n);
   double residual = 0.0, size = 0.0;
   for (int i = 0; i < n; ++i) {
+    double r_i = b(i), magnitude_i = std::abs(b(i)), scale_i = 0.0;
+    for (int t = rows.starts[i]; t < rows.starts[i + 1]; ++t) {
+      const double a = values[rows.positions[t]];
+      const double term = a * x(rows.columns[t]);
+      r_i -= term;
+      magnitude_i += std::abs(term);
+      if (measure_rows) scale_i = std::max(scale_i, std::abs(a));
+    }
+    r(i) = r_i;
+    magnitude(i) = magnitude_i;
+    if (measure_rows) row_scale(i) = scale_i;
     if (row_scale(i) == 0.0) continue;  // an empty row: structurally singular, refused earlier
-    residual = std::max(residual, std::abs(r(i)) / row_scale(i));
-    size = std::max(size, magnitude(i) / row_scale(i));
+    residual = std::max(residual, std::abs(r_i) / row_scale(i));
+    size = std::max(size, magnitude_i / row_scale(i));
   }
   return residual == 0.0 ? 0.0 : residual / size;
 }

@@ -45,13 +45,24 @@ struct SubstructuredPattern {
 SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
                                            const std::vector<int>& substructure);
 
+/// A compressed-column matrix's entries row by row: row i's are positions[starts[i] …
+/// starts[i + 1]) of its values, in columns columns[…], in the order of their columns.
+struct RowOrder {
+  std::vector<int> starts, positions, columns;
+};
+
+/// The row order of A's pattern.
+RowOrder row_order(const core::SparseMatrix& A);
+
 /// r = b − A x, and the normwise backward error of x for the system with every row divided by its
 /// largest entry, D = diag(row_scale) (as KLU scales it): ω = ‖D⁻¹r‖∞ / ‖D⁻¹(|A||x| + |b|)‖∞.
 /// An LU of A with partial pivoting gives ω of a few unit round-offs; a componentwise measure is
 /// not what it guarantees (a row whose few terms are all at the round-off of the others' size
 /// would never be met). With `measure_rows`, row_scale(i) = maxⱼ |aᵢⱼ| is measured in the same
-/// pass. `magnitude` is scratch.
-double residual_and_backward_error(const core::SparseMatrix& A,
+/// pass. `magnitude` is scratch. Row by row (`rows` = row_order(A)): each row's sums are formed
+/// in registers, in the order of its columns, the order a pass by columns adds them in, so r and
+/// the sums are the same bits, without a scattered update of three vectors per entry.
+double residual_and_backward_error(const core::SparseMatrix& A, const RowOrder& rows,
                                    const Eigen::Ref<const Eigen::VectorXd>& x,
                                    const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::VectorXd& r,
                                    Eigen::VectorXd& magnitude, Eigen::VectorXd& row_scale,
