@@ -255,7 +255,7 @@ private:
     double previous = INFINITY;
     for (int sweep = 0;; ++sweep) {
       const double omega = residual_and_backward_error(system_, system_rows_, x, right_hand_side_, correction_,
-                                                       magnitude_, row_scale_, row_scale_stale_);
+                                                       row_scale_, row_scale_stale_);
       row_scale_stale_ = false;
       if (omega <= round_off_backward_error) return true;
       if (sweep == max_refinement_sweeps || !(omega < 0.5 * previous))
@@ -331,7 +331,7 @@ private:
   SparseMatrix system_;
   RowOrder system_rows_;  ///< system_'s entries row by row, for the refinement's residual
   std::vector<double> preconditioner_values_;
-  Eigen::VectorXd row_scale_, right_hand_side_, correction_, magnitude_;
+  Eigen::VectorXd row_scale_, right_hand_side_, correction_;
   /// row_scale_ is that of the last matrix but one (a factorization since).
   bool row_scale_stale_ = true;
 };

@@ -98,12 +98,10 @@ RowOrder row_order(const core::SparseMatrix& A) {
 double residual_and_backward_error(const core::SparseMatrix& A, const RowOrder& rows,
                                    const Eigen::Ref<const Eigen::VectorXd>& x,
                                    const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::VectorXd& r,
-                                   Eigen::VectorXd& magnitude, Eigen::VectorXd& row_scale,
-                                   bool measure_rows) {
+                                   Eigen::VectorXd& row_scale, bool measure_rows) {
   const int n = static_cast<int>(A.rows());
   const double* values = A.valuePtr();
   r.resize(n);
-  magnitude.resize(n);
   if (measure_rows) row_scale.resize(n);
   double residual = 0.0, size = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -116,7 +114,6 @@ double residual_and_backward_error(const core::SparseMatrix& A, const RowOrder& 
       if (measure_rows) scale_i = std::max(scale_i, std::abs(a));
     }
     r(i) = r_i;
-    magnitude(i) = magnitude_i;
     if (measure_rows) row_scale(i) = scale_i;
     if (row_scale(i) == 0.0) continue;  // an empty row: structurally singular, refused earlier
     residual = std::max(residual, std::abs(r_i) / row_scale(i));

@@ -59,13 +59,12 @@ RowOrder row_order(const core::SparseMatrix& A);
 /// An LU of A with partial pivoting gives ω of a few unit round-offs; a componentwise measure is
 /// not what it guarantees (a row whose few terms are all at the round-off of the others' size
 /// would never be met). With `measure_rows`, row_scale(i) = maxⱼ |aᵢⱼ| is measured in the same
-/// pass. `magnitude` is scratch. Row by row (`rows` = row_order(A)): each row's sums are formed
-/// in registers, in the order of its columns, the order a pass by columns adds them in, so r and
-/// the sums are the same bits, without a scattered update of three vectors per entry.
+/// pass. Row by row (`rows` = row_order(A)): each row's sums are formed in registers, in the
+/// order of its columns, the order a pass by columns adds them in, so r and the sums are the same
+/// bits, without a scattered update of three vectors per entry.
 double residual_and_backward_error(const core::SparseMatrix& A, const RowOrder& rows,
                                    const Eigen::Ref<const Eigen::VectorXd>& x,
                                    const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::VectorXd& r,
-                                   Eigen::VectorXd& magnitude, Eigen::VectorXd& row_scale,
-                                   bool measure_rows);
+                                   Eigen::VectorXd& row_scale, bool measure_rows);
 
 }  // namespace spar::solvers::detail
