@@ -208,10 +208,11 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
   const int total = element_count + static_cast<int>(constraints_.size());
   // `automatic` on a model too small for the parallel evaluation to pay for certain: the faster
   // of the two as timed (execution_choice.hpp).
-  const bool timed = execution_ == core::AssemblyExecution::automatic &&
-                     !pattern_->runs_parallel(execution_) && core::WorkSharing::shared().thread_count() > 1;
+  const bool parallel_by_size = pattern_->runs_parallel(execution_);
+  const bool timed = execution_ == core::AssemblyExecution::automatic && !parallel_by_size &&
+                     core::WorkSharing::shared().thread_count() > 1;
   ExecutionChoice& choice = c ? matrix_execution_ : residual_execution_;
-  const bool parallel = timed ? choice.parallel() : pattern_->runs_parallel(execution_);
+  const bool parallel = timed ? choice.parallel() : parallel_by_size;
   const auto start = std::chrono::steady_clock::now();
   if (c) {
     pattern_->assemble(
