@@ -203,7 +203,8 @@ TEST_CASE("xmllint accepts the XDMF sidecar at every flush and after close", "[o
   const spar::test::ScratchFolder folder("xmllint");
   ResultsWriter writer(folder.file("run.h5"), spar::test::sample_layout(), 3);
   for (int k = 0; k < 4; ++k) writer.append(SampleStep(k).step);
-  CHECK(accepted(writer.xdmf_path()));  // 3 steps flushed, 1 buffered
+  REQUIRE(writer.steps_flushed() == 3);  // waits for the writer thread: 3 steps on disk, 1 buffered
+  CHECK(accepted(writer.xdmf_path()));
   writer.flush();
   CHECK(accepted(writer.xdmf_path()));
   writer.close();
