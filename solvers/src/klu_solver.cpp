@@ -9,10 +9,11 @@
 // cannot foresee. On the slider-crank AMD is 2.6 % cheaper than COLAMD (callgrind,
 // docs/performance.md). With substructures given (LinearSolver::set_substructures), a third
 // candidate is the substructured factorization of substructuring.hpp, kept when it needs less
-// than half the flops of the better whole-matrix ordering (its solves refine against A, one or two
-// extra back-substitutions): on the truss unit, 4 times fewer (docs/dynamics.md D12). When the
-// substructured matrix is singular or the refinement does not reach round-off, that matrix is
-// factorized as a whole; after three such failures in a row, the rest of the pattern too.
+// than half the flops of the better whole-matrix ordering (its solves refine against A, one to
+// three extra back-substitutions): on the truss unit, 7 times fewer (docs/dynamics.md D12). When
+// the substructured matrix is singular or the refinement does not reach its target
+// (LinearSolver::refinement_target), that matrix is factorized as a whole; after three such
+// failures in a row, the rest of the pattern too.
 #include "linear_solver_backends.hpp"
 #include "substructuring.hpp"
 
@@ -248,16 +249,17 @@ private:
   }
 
   /// Iterative refinement of x (P⁻¹ b on entry) against A = system_: x ← x + P⁻¹(b − A x) until
-  /// the backward error reaches round-off (round_off_backward_error), or after
-  /// max_refinement_sweeps, or when a sweep no longer halves it. True when it ends below
-  /// trusted_backward_error. The rows' scales are measured in the first pass after a factorization.
+  /// the backward error reaches refinement_target(), or after max_refinement_sweeps, or when a
+  /// sweep no longer halves it. True when it ends below the target or, stalled, below
+  /// trusted_backward_error. The rows' scales are measured in the first pass after a
+  /// factorization.
   bool refined(Eigen::Ref<Eigen::VectorXd> x) {
     double previous = INFINITY;
     for (int sweep = 0;; ++sweep) {
       const double omega = residual_and_backward_error(system_, system_rows_, x, right_hand_side_, correction_,
                                                        row_scale_, row_scale_stale_);
       row_scale_stale_ = false;
-      if (omega <= round_off_backward_error) return true;
+      if (omega <= refinement_target()) return true;
       if (sweep == max_refinement_sweeps || !(omega < 0.5 * previous))
         return omega <= trusted_backward_error;
       back_substitute(substructured_, correction_);
@@ -281,9 +283,10 @@ private:
   static constexpr double whole_pivot_tolerance = 1e-3;
   /// On P, the interface's diagonal (the dual Schur complement, small against the couplings of a
   /// sliding joint's ζ) is kept unless a million times smaller than its column: with KLU's 1e-3,
-  /// 88 of the truss unit's 208 interface pivots went off the diagonal and doubled the flops
-  /// (2.1 against 1.3 Mflop, frame 0 still in P). The refinement against A and the pivot-ratio
-  /// test of every refactorization guard the accuracy.
+  /// more pivots go off the diagonal and the truss unit takes 0.67 against 0.64 Mflop (with the
+  /// boundaries eliminated before the interface, 88 of its 208 interface pivots did, 2.1 against
+  /// 1.3 Mflop). The refinement against A and the pivot-ratio test of every refactorization guard
+  /// the accuracy.
   static constexpr double substructured_pivot_tolerance = 1e-6;
   /// klu_common::scale: no scaling (and no check of the matrix, which the pattern guarantees).
   static constexpr int unscaled = -1;
@@ -297,14 +300,9 @@ private:
   static constexpr int substructured_row_scaling = unscaled;
   /// The substructured factorization is kept when its flops are below this share of A's.
   static constexpr double substructured_flop_share = 0.5;
-  /// The backward error the refinement aims at: four unit round-offs, what an LU of A with partial
-  /// pivoting gives at best (KLU's LU of a whole saddle-point matrix may give far less: 2e-9 on the
-  /// lattice frame of tests/solvers). On the truss unit P's solve alone leaves 1e-15…4e-14 and one
-  /// sweep 6e-17.
-  static constexpr double round_off_backward_error = 4.0 * 2.220446049250313e-16;
   /// A refinement that stalls (a sweep no longer halves the error) is trusted below this, 450 unit
-  /// round-offs, far below what a Newton increment needs; above it the couplings P leaves out are
-  /// too strong, and the matrix is factorized as a whole.
+  /// round-offs; above it the couplings P leaves out are too strong, and the matrix is factorized
+  /// as a whole.
   static constexpr double trusted_backward_error = 1e-13;
   static constexpr int max_refinement_sweeps = 10;
   /// Substructuring is given up for the pattern after this many failures in a row (P singular or

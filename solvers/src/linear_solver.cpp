@@ -155,6 +155,14 @@ void LinearSolver::solve(Eigen::Ref<Eigen::VectorXd> b) {
   ++solves_;
 }
 
+void LinearSolver::set_refinement_target(double backward_error) {
+  if (!(backward_error > 0.0 && backward_error < 1.0))
+    throw Error("refinement target " + significant(backward_error) + " is not in (0, 1)",
+                where("set_refinement_target"),
+                "give a backward error such as solvers::round_off_backward_error or 1e-9");
+  refinement_target_ = backward_error;
+}
+
 void LinearSolver::throw_library_failure(std::string_view call, int status) const {
   throw Error(std::string(call) + " failed with status " + std::to_string(status),
               where(call), "check the matrix for NaN or Inf values and the available memory");

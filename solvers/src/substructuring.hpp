@@ -13,8 +13,9 @@
 // interface (multipliers, joint-owned coordinates) last factorizes into the members' band factors
 // and the dual Schur complement B K⁻¹ Bᵀ — the classical substructuring of structural analysis.
 // The dropped entries are λ-sized against the members' stiffness and mass; iterative refinement
-// with A itself (x ← x + P⁻¹(b − A x)) restores the solution of A to round-off in one or two
-// sweeps, so the Newton iterates are those of an exact factorization.
+// with A itself (x ← x + P⁻¹(b − A x)) restores the solution of A to the solver's refinement
+// target in a few sweeps (LinearSolver::refinement_target: round-off by default, 1e-9 for a
+// Newton increment), so the Newton iterates are those of an exact factorization.
 
 #include <spar/core/sparse_assembly.hpp>
 #include <spar/solvers/linear_solver.hpp>
@@ -33,7 +34,7 @@ struct SubstructuredPattern {
   /// P's k-th value is A's value source[k].
   std::vector<int> source;
   /// A symmetric fill-reducing permutation (new position → unknown): the substructures' inner
-  /// unknowns, then their boundaries (coupled to the interface), then the interface, each part
+  /// unknowns, then their boundaries (coupled to the interface) with the interface, each part
   /// ordered by constrained minimum degree (CAMD) on P + Pᵀ.
   std::vector<int> ordering;
   /// How many of A's entries P leaves out (0: P is A).

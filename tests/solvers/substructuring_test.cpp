@@ -126,7 +126,7 @@ TEST_CASE("substructuring: a frame of 60 members is factorized by members and so
   CHECK_FALSE(whole->substructured());
 
   // By default KLU substructures only where that saves flops (the truss unit: tests/
-  // truss_deployment); on this lattice the whole matrix is cheaper (1.9 against 3.4 Mflop).
+  // truss_deployment); on this lattice the whole matrix is cheaper (2.0 against 2.4 Mflop).
   auto by_default = solvers::make_linear_solver(LinearSolverKind::klu);
   by_default->set_substructures(frame.substructure);
   const Eigen::VectorXd whole_again = solve_with(*by_default, frame.A, b);
@@ -152,6 +152,38 @@ TEST_CASE("substructuring: a frame of 60 members is factorized by members and so
   solver->solve(y);
   CHECK(solver->substructured());
   CHECK(relative_residual(B, y, b) <= 1e-15);
+}
+
+TEST_CASE("substructuring: a solve is refined to the backward error asked for, round-off by default",
+          "[solvers][substructuring]") {
+  // Couplings of 1e-3 against a diagonal of 3 to 4: P's solve alone is ~1e-3 off, and each sweep
+  // gains about that much. A Newton iteration asks for 1e-9 (GeneralizedAlpha): the sweeps stop
+  // there, short of round-off.
+  const Frame frame = lattice_frame(3, 6, 1e-3, 2.0);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(frame.A.rows(), -1.0, 2.0);
+  const Eigen::VectorXd reference = eigen_lu(frame.A, b);
+  const auto solve_to = [&](double target) {
+    auto solver = solvers::make_linear_solver(LinearSolverKind::klu);
+    solver->set_substructures(frame.substructure, solvers::Substructuring::always);
+    if (target > 0.0) solver->set_refinement_target(target);
+    const Eigen::VectorXd x = solve_with(*solver, frame.A, b);
+    REQUIRE(solver->substructured());
+    return x;
+  };
+  const Eigen::VectorXd round_off = solve_to(0.0), newton = solve_to(1e-9);
+  const double scale = reference.lpNorm<Eigen::Infinity>();
+  CHECK(relative_residual(frame.A, round_off, b) <= 1e-15);
+  CHECK((round_off - reference).lpNorm<Eigen::Infinity>() <= 1e-13 * scale);
+  // Refined to 1e-9, and no further: not the round-off solution.
+  CHECK(relative_residual(frame.A, newton, b) <= 1e-9);
+  CHECK((newton - reference).lpNorm<Eigen::Infinity>() <= 1e-8 * scale);
+  CHECK((newton - reference).lpNorm<Eigen::Infinity>() > 1e-13 * scale);
+
+  auto solver = solvers::make_linear_solver(LinearSolverKind::klu);
+  CHECK(solver->refinement_target() == solvers::round_off_backward_error);
+  for (const double bad : {0.0, -1e-9, 1.0, std::nan("")})
+    CHECK_THROWS_WITH(solver->set_refinement_target(bad), Catch::Contains("refinement target") &&
+                                                               Catch::Contains("not in (0, 1)"));
 }
 
 TEST_CASE("substructuring: couplings too strong to refine fall back to the whole matrix",

@@ -14,6 +14,7 @@
 #include <Eigen/SparseCore>
 
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -41,6 +42,10 @@ std::string_view to_string(LinearSolverKind kind);
 /// Substructure ids of LinearSolver::set_substructures that are not a substructure.
 inline constexpr int interface_unknown = -1;
 inline constexpr int fixed_unknown = -2;
+
+/// The backward error of a solve at round-off: four unit round-offs, what an LU with partial
+/// pivoting gives at best.
+inline constexpr double round_off_backward_error = 4.0 * std::numeric_limits<double>::epsilon();
 
 /// When a backend that can factorize by substructures (LinearSolver::set_substructures) does.
 enum class Substructuring {
@@ -93,6 +98,13 @@ public:
   /// Whether the last factorization was by substructuring (and solve refines).
   virtual bool substructured() const noexcept { return false; }
 
+  /// The normwise backward error to which a substructured solve is refined against A (see
+  /// set_substructures): round-off, four unit round-offs, by default. A Newton iteration needs far
+  /// less and may ask for less (GeneralizedAlpha does); a solve whose refinement stalls above it
+  /// is redone with A as a whole. Throws spar::Error unless 0 < backward_error < 1.
+  void set_refinement_target(double backward_error);
+  double refinement_target() const noexcept { return refinement_target_; }
+
   /// The number of successful analyze calls.
   std::size_t analyses() const noexcept { return analyses_; }
   /// The number of successful factorize calls.
@@ -139,6 +151,7 @@ private:
   LinearSolverKind kind_;
   std::vector<int> substructures_;
   Substructuring substructuring_ = Substructuring::when_cheaper;
+  double refinement_target_ = round_off_backward_error;
   /// The analyzed pattern, to check that factorize gets the same one.
   std::vector<int> analyzed_column_starts_;
   std::vector<int> analyzed_row_indices_;
