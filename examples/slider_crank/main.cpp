@@ -26,6 +26,7 @@
 #include <csv_row.hpp>
 #include <run_counters.hpp>
 #include <energy_balance.hpp>
+#include <newton_test.hpp>
 
 #include "slider_crank_model.hpp"
 
@@ -48,13 +49,7 @@ int main(int argc, char** argv) try {
   const int elements = cli.integer("--elements", 6, "cubic NURBS elements per rod", 1,
                                      examples::element_limit(examples::bytes_per_element));
   const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
-  const double tolerance = cli.number("--tolerance", 1e-6, "Newton: |[dq, h^2 beta dlambda]|^2 (003: 1e-6)",
-                                        examples::newton_tolerances);
-  const double constraint_tolerance = cli.number("--constraint-tolerance", 1e-10, "Newton: |Phi|_inf [m]",
-                                                   examples::newton_tolerances);
-  const double residual_tolerance = cli.number("--residual-tolerance", INFINITY,
-                                               "Newton: relative dynamic residual (off: 003's test)",
-                                               examples::Range::positive(1));
+  const examples::NewtonTest newton = examples::newton_test_options(cli);
   const int max_iterations = cli.integer("--max-iterations", 25, "Newton iterations before a step is cut back", 1, 1000);
   const std::string solver = cli.text("--solver", "klu", "sparse LU: klu | umfpack | eigen-lu",
                                         {"klu", "umfpack", "eigen-lu"});
@@ -83,8 +78,8 @@ int main(int argc, char** argv) try {
       model, std::move(mechanism.joints),
       {.time_step = h, .spectral_radius = rho_infinity,
        .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
-       .tolerance = tolerance, .constraint_tolerance = constraint_tolerance,
-       .residual_tolerance = residual_tolerance, .max_iterations = max_iterations,
+       .tolerance = newton.tolerance, .constraint_tolerance = newton.constraint_tolerance,
+       .residual_tolerance = newton.residual_tolerance, .max_iterations = max_iterations,
        .linear_solver = solvers::linear_solver_kind_from_string(solver)});
   integrator.initialize();
   const core::Configuration initial_state = model.state();  // the reference geometry, for arc lengths
