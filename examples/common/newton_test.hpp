@@ -14,14 +14,14 @@ struct NewtonTest {
 };
 
 /// --tolerance, --constraint-tolerance and --residual-tolerance; by default 003's test: the
-/// increment at 1e-6, Φ at 1e-10 m, the residual untested.
-inline NewtonTest newton_test_options(CommandLine& cli) {
+/// increment at 1e-6, Φ at 1e-10 m, the residual untested (or tested at `residual_tolerance`).
+inline NewtonTest newton_test_options(CommandLine& cli, double residual_tolerance = INFINITY) {
   return {.tolerance = cli.number("--tolerance", 1e-6, "Newton: |[dq, h^2 beta dlambda]|^2 (003: 1e-6)",
                                   newton_tolerances),
           .constraint_tolerance = cli.number("--constraint-tolerance", 1e-10, "Newton: |Phi|_inf [m]",
                                              newton_tolerances),
-          .residual_tolerance = cli.number("--residual-tolerance", INFINITY,
-                                           "Newton: relative dynamic residual (off: 003's test)",
+          .residual_tolerance = cli.number("--residual-tolerance", residual_tolerance,
+                                           "Newton: relative dynamic residual (inf: off, 003's test)",
                                            Range::positive(1))};
 }
 
