@@ -22,7 +22,7 @@ case "${1:-}" in
   --test)
     packages+=(
       paraview python3-paraview  # ParaView and its pvpython (the results-file test, label paraview)
-      xvfb xauth                 # xvfb-run: a virtual X server for pvpython's rendering
+      xvfb                       # Xvfb: the virtual X server pvpython renders on (tests/output/virtual_display.py)
       libxml2-utils              # xmllint: the XDMF sidecars are well-formed XML (tests/output, tests/examples)
       clang libclang-rt-dev libomp-dev  # the sanitizer build and libFuzzer (clang's OpenMP)
     ) ;;
