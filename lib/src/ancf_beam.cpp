@@ -29,6 +29,13 @@ void add_elements(Model& model, const AncfBeamParameters& p, double l, AncfBeam&
   }
 }
 
+/// Throws spar::Error unless `node` is a vector block of 12 coordinates (r, r_x, r_y, r_z), the
+/// kind of block add_ancf_beam makes a node of.
+void check_ancf_node(const Configuration& q, int node, const char* where) {
+  if (node < 0 || node >= q.block_count() || q.is_frame(node) || q.blocks[node].size != 12)
+    throw Error("block " + std::to_string(node) + " is not an ANCF node", where, "give a node of core::add_ancf_beam");
+}
+
 }  // namespace
 
 AncfBeam add_ancf_beam(Model& model, const AncfBeamParameters& p) {
@@ -44,6 +51,12 @@ AncfBeam add_ancf_beam(Model& model, const AncfBeamParameters& p) {
     throw Error("the y direction is parallel to the beam", where, "give a y direction across the beam");
   y.normalize();
   const Eigen::Vector3d z = t.cross(y);
+  // Checked before any block is added (the element tables would refuse the material only after
+  // the nodes were in the model); a default SectionIntegrals has every integral zero.
+  p.material.validate();
+  if (!(p.section.area() > 0.0))
+    throw Error("the section has an area of " + significant(p.section.area()), where,
+                "give AncfBeamParameters::section, e.g. SectionIntegrals::circle(radius)");
 
   AncfBeam beam;
   beam.kind = p.kind;
@@ -59,6 +72,7 @@ AncfBeam add_ancf_beam(Model& model, const AncfBeamParameters& p) {
 }
 
 Eigen::Vector3d ancf_node_position(const Configuration& q, int node) {
+  check_ancf_node(q, node, "core::ancf_node_position");
   return q.vector(node).head<3>();
 }
 
@@ -80,10 +94,7 @@ Eigen::MatrixXd sample_ancf_centerline(const Configuration& q, const AncfBeam& b
 }
 
 int add_ancf_nodal_force(Model& model, int node, const Eigen::Vector3d& force, LoadHistory history) {
-  if (node < 0 || node >= model.block_count() || model.state().is_frame(node) ||
-      model.state().blocks[node].size != 12)
-    throw Error("block " + std::to_string(node) + " is not an ANCF node", "core::add_ancf_nodal_force",
-                "give a node of core::add_ancf_beam");
+  check_ancf_node(model.state(), node, "core::add_ancf_nodal_force");
   Eigen::VectorXd f = Eigen::VectorXd::Zero(12);
   f.head<3>() = force;
   return model.add_element(std::make_unique<VectorLoadElement>(model.state(), node, std::move(f),

@@ -46,6 +46,14 @@ int Model::add_element(std::unique_ptr<Element> element) {
   return element_count() - 1;
 }
 
+const Element& Model::element(int i) const {
+  if (i < 0 || i >= element_count())
+    throw Error("element " + std::to_string(i) + " does not exist (the model has " +
+                    std::to_string(element_count()) + " elements)",
+                "core::Model::element", "use an index below element_count()");
+  return *elements_[i];
+}
+
 void Model::replace_element(int i, std::unique_ptr<Element> element) {
   const char* where = "core::Model::replace_element";
   if (i < 0 || i >= element_count())
@@ -184,6 +192,56 @@ void Model::replace_state(Configuration state) {
     }
   state_ = std::move(state);
   ++structure_version_;
+}
+
+namespace {
+
+/// A frame block's R must be a rotation to lie::rotation_tolerance = 1e-9 in ‖RᵀR − I‖_F, the
+/// tolerance of add_frame and of lie::log (which the beam elements take of relative rotations, so
+/// a looser check here would only move the refusal into an element, as a failed iteration). The
+/// solvers' own updates R ← R exp(Δφ) stay far inside it: 10⁷ random updates of 0.01 rad drift
+/// by 9e-13 (growing as √N: 4e-15 after 10³, 1e-13 after 10⁵), a thousandth of the tolerance.
+/// det R > 0 then tells a rotation from a reflection, whose det is −1 to the same accuracy.
+void check_frame_state(const Configuration& q, int b, std::string_view where) {
+  const std::string block = "block " + std::to_string(b);
+  if (!q.position[b].allFinite())
+    throw Error("the position of " + block + " has a NaN or infinite entry", where,
+                "write finite positions into Model::state()");
+  const Eigen::Matrix3d& R = q.rotation[b];
+  if (!R.allFinite())
+    throw Error("the rotation of " + block + " has a NaN or infinite entry", where,
+                "write rotation matrices into Model::state()");
+  const double orthogonality = (R.transpose() * R - Eigen::Matrix3d::Identity()).norm();
+  if (!(orthogonality <= lie::rotation_tolerance))
+    throw Error("the rotation of " + block + " is not a rotation: |R^T R - I| = " + significant(orthogonality) +
+                    " > " + significant(lie::rotation_tolerance),
+                where, "write rotation matrices into Model::state() (re-orthogonalize a computed one)");
+  if (!(R.determinant() > 0.0))
+    throw Error("the rotation of " + block + " is a reflection (det R = " + significant(R.determinant()) + ")", where,
+                "write proper rotations (det R = +1) into Model::state()");
+}
+
+}  // namespace
+
+void Model::check_consistent(std::string_view where) const {
+  const int blocks = state_.block_count();
+  for (int i = 0; i < element_count(); ++i)
+    for (const int b : elements_[i]->blocks())
+      if (b < 0 || b >= blocks)
+        throw Error("element " + std::to_string(i) + " (" + elements_[i]->name() + ") acts on block " +
+                        std::to_string(b) + ", which the configuration (" + std::to_string(blocks) +
+                        " blocks) does not have",
+                    where, "after Model::replace_state, renumber the elements with replace_element");
+  for (const int dof : fixed_dofs_)
+    if (dof >= dof_count())
+      throw Error("fixed dof " + std::to_string(dof) + " is outside the configuration's " +
+                      std::to_string(dof_count()) + " dofs",
+                  where, "after Model::replace_state, renumber the Dirichlet conditions with set_fixed_dofs");
+  if (!state_.values.allFinite())
+    throw Error("a vector block of the configuration has a NaN or infinite entry", where,
+                "write finite coordinates into Model::state()");
+  for (int b = 0; b < blocks; ++b)
+    if (state_.is_frame(b)) check_frame_state(state_, b, where);
 }
 
 void Model::set_fixed_dofs(std::vector<int> dofs) {

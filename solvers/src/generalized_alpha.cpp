@@ -918,9 +918,20 @@ struct GeneralizedAlpha::Implementation {
   }
 };
 
+namespace {
+
+/// The model, once Model::check_consistent has passed it (for the constructor's initializer).
+core::Model& consistent(core::Model& model, const char* where) {
+  model.check_consistent(where);
+  return model;
+}
+
+}  // namespace
+
 GeneralizedAlpha::GeneralizedAlpha(core::Model& model, ConstraintList constraints,
                                    const DynamicOptions& options)
-    : impl_(std::make_unique<Implementation>(model, std::move(constraints), options)) {}
+    : impl_(std::make_unique<Implementation>(consistent(model, "solvers::GeneralizedAlpha"), std::move(constraints),
+                                             options)) {}
 
 GeneralizedAlpha::~GeneralizedAlpha() = default;
 
@@ -961,12 +972,14 @@ void GeneralizedAlpha::set_velocity(int block, const Eigen::VectorXd& velocity) 
 }
 
 void GeneralizedAlpha::initialize() {
+  impl_->model.check_consistent("solvers::GeneralizedAlpha::initialize");
   const auto start = std::chrono::steady_clock::now();
   impl_->initialize();
   impl_->counters.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void GeneralizedAlpha::step() {
+  impl_->model.check_consistent("solvers::GeneralizedAlpha::step");
   impl_->take_structure_changes();
   if (!impl_->initialized) initialize();
   const auto start = std::chrono::steady_clock::now();
@@ -977,6 +990,7 @@ void GeneralizedAlpha::step() {
 void GeneralizedAlpha::remap(const Eigen::MatrixXd& P, const Eigen::VectorXd& increment_units) {
   const int new_dofs = impl_->model.dof_count();
   const char* where = "solvers::GeneralizedAlpha::remap";
+  impl_->model.check_consistent(where);
   if (P.rows() != new_dofs || P.cols() != impl_->assembly.dof_count() || !P.allFinite())
     throw Error("the map is " + std::to_string(P.rows()) + "x" + std::to_string(P.cols()) +
                     ", expected " + std::to_string(new_dofs) + "x" +

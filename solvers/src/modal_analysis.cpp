@@ -20,6 +20,7 @@ Modes modal_analysis(core::Model& model, const std::vector<joints::Constraint*>&
                      const ModalOptions& options, const Eigen::VectorXd& multipliers) {
   const char* where = "solvers::modal_analysis";
   if (options.modes < 1) throw Error("modes must be at least 1", where, "ask for one mode or more");
+  model.check_consistent(where);
   detail::SystemAssembly assembly(model, constraints, options.assembly);
   const int n = assembly.dof_count(), m = assembly.multiplier_count();
   if (multipliers.size() != 0 && multipliers.size() != m)

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 namespace spar::solvers {
 
@@ -102,10 +103,21 @@ public:
   }
   void set_multipliers(const Eigen::VectorXd& lambda) { lambda_ = lambda; }
 
+  /// Why the last solve() returned false, for the final error.
+  const std::string& failure() const { return failure_; }
+  /// Whether it failed because its iterate left the range of double: finite increments summing
+  /// to a rotation whose norm overflows (exp cannot take it) or to a non-finite position. At
+  /// finite input (Model::check_consistent, the loads' own checks) that is a load no state of
+  /// the model balances: a tip force of 1e200 to 1e300 N on a steel cantilever ends here. A
+  /// non-finite increment or residual is not counted: a nearly singular tangent gives those too.
+  bool overflowed() const { return overflowed_; }
+
   /// Iterates from the converged state to equilibrium at `load_factor`; false if it does not
-  /// converge in max_iterations, an element cannot be evaluated or the tangent is singular at an
-  /// iterate (the state is then whatever the last iterate was).
+  /// converge in max_iterations, an element cannot be evaluated, the tangent is singular at an
+  /// iterate or the iterates overflow (the state is then whatever the last iterate was; the
+  /// caller restores it). A spar::InputError (a NaN load history) is passed on.
   bool solve(double load_factor, StaticStep& step, StaticReport& report) {
+    overflowed_ = false;
     const core::Configuration converged = model_.state();
     const int n = assembly_.dof_count();
     Eigen::VectorXd chart = Eigen::VectorXd::Zero(n), delta(assembly_.size());
@@ -121,12 +133,14 @@ public:
         assembly_.evaluate(in, lambda_, &stiffness_only, detail::Chart::converged, chart, false);
         if (iteration == 0 && start_multipliers && balancing_multipliers())
           assembly_.evaluate(in, lambda_, &stiffness_only, detail::Chart::converged, chart, false);
-      } catch (const Error&) {
-        return false;  // an element that cannot be evaluated here: cut the load step back
+      } catch (const InputError&) {
+        throw;  // bad input, which a smaller load step cannot help
+      } catch (const Error& error) {
+        return fail(error.what());  // an element that cannot be evaluated here: cut the load step back
       }
       const Eigen::VectorXd& residual = assembly_.residual();
       const double residual_norm = free_norm(residual, fixed_, n);
-      if (!std::isfinite(residual_norm)) return false;
+      if (!std::isfinite(residual_norm)) return fail("the residual is not finite");
       const double constraint_norm =
           assembly_.multiplier_count() ? residual.tail(assembly_.multiplier_count()).lpNorm<Eigen::Infinity>() : 0.0;
       const double allowed = std::max(options_.residual_tolerance * free_norm(assembly_.scale(), fixed_, n),
@@ -141,22 +155,33 @@ public:
       assembly_.pattern().apply_dirichlet(model_.fixed_dofs(), delta);
       try {
         solver_->factorize(assembly_.pattern().matrix());
-      } catch (const Error&) {
-        return false;  // a singular tangent at this iterate: cut the load step back
+      } catch (const Error& error) {
+        return fail(error.what());  // a singular tangent at this iterate: cut the load step back
       }
       ++report.factorizations;
       solver_->solve(delta);
       ++report.newton_iterations;
-      if (!delta.allFinite()) return false;
+      if (!delta.allFinite()) return fail("the increment is not finite");
       increment_norm = delta.head(n).lpNorm<Eigen::Infinity>();
       chart += delta.head(n);
       lambda_ += delta.tail(assembly_.multiplier_count());
+      // exp of a rotation whose norm overflows (a tip force of 1e200 N) throws: before, out of the
+      // solver and past its restore, leaving positions near 1e291 m.
+      if (!chart.allFinite() || !std::isfinite(model_.state().largest_rotation(chart))) {
+        overflowed_ = true;
+        return fail("the iterate left the range of double");
+      }
       model_.state().assign_increment(converged, chart);
     }
-    return false;
+    return fail("no convergence in " + std::to_string(options_.max_iterations) + " iterations");
   }
 
 private:
+  bool fail(std::string why) {
+    failure_ = std::move(why);
+    return false;
+  }
+
   /// The first load step starts from the multipliers that best balance its load,
   /// λ₀ = argmin ‖Bᵀλ + r‖ over the free dofs (r the residual at λ = 0), from the normal
   /// equations B Bᵀ λ₀ = −B r; false (λ left at 0) when B Bᵀ is singular (redundant
@@ -188,6 +213,8 @@ private:
   std::unique_ptr<LinearSolver> solver_;
   std::vector<char> fixed_;
   Eigen::VectorXd lambda_;
+  std::string failure_;
+  bool overflowed_ = false;
 };
 
 void check_options(const StaticOptions& o) {
@@ -204,6 +231,7 @@ void check_options(const StaticOptions& o) {
 StaticReport solve_static(core::Model& model, const StaticOptions& options,
                           const std::vector<joints::Constraint*>& constraints) {
   check_options(options);
+  model.check_consistent("solvers::solve_static");
   const auto start = std::chrono::steady_clock::now();
   StaticReport report;
   NewtonStep newton(model, constraints, options);
@@ -221,22 +249,35 @@ StaticReport solve_static(core::Model& model, const StaticOptions& options,
     const core::Configuration converged = model.state();
     const Eigen::VectorXd converged_lambda = newton.multipliers();
     StaticStep step;
-    if (newton.solve(target, step, report)) {
+    const auto restore = [&] {
+      model.state() = converged;
+      newton.set_multipliers(converged_lambda);
+    };
+    bool solved = false;
+    try {
+      solved = newton.solve(target, step, report);
+    } catch (...) {
+      restore();  // every failure leaves the state of the last converged load factor
+      throw;
+    }
+    if (solved) {
       report.steps.push_back(step);
       converged_factor = target;
       continue;
     }
-    model.state() = converged;
-    newton.set_multipliers(converged_lambda);
+    restore();
     ++report.cutbacks;
     if (++halvings > options.max_cutbacks) {
       std::ostringstream what;
+      if (newton.overflowed()) what << "the load is too large for the model: ";
       what << "Newton did not converge from load factor " << converged_factor << " to " << target
            << " with the load increment halved " << options.max_cutbacks << " times; the model keeps the state at the "
-           << "last converged load factor " << converged_factor;
+           << "last converged load factor " << converged_factor << " (the last attempt: " << newton.failure() << ")";
       throw ConvergenceError(what.str(), "solvers::solve_static",
-                             "use more load steps, check supports (an unsupported rigid-body mode "
-                             "makes the tangent singular) and loads",
+                             newton.overflowed()
+                                 ? "reduce the loads to what the model can carry (check their units)"
+                                 : "use more load steps, check supports (an unsupported rigid-body mode "
+                                   "makes the tangent singular) and loads",
                              converged_factor);
     }
     increment /= 2;

@@ -21,12 +21,14 @@ void add_external_force(const Eigen::Ref<const Eigen::VectorXd>& f, const Elemen
 }  // namespace
 
 double load_scale(const ElementInput& in, const std::function<double(double)>& history) {
-  if (!in.dynamic() || !history) return in.load_factor;
+  if (!history) return in.load_factor;
+  // Checked in statics too, which scales by λ alone: a NaN history was accepted there and
+  // refused only by the dynamic run that started from the static state.
   const double factor = history(in.time);
   if (!std::isfinite(factor))
     throw InputError("the load history gives " + significant(factor) + " at t = " + significant(in.time),
                 "core::Model::add_load (LoadHistory)", "give a history that is finite at every time of the run");
-  return in.load_factor * factor;
+  return in.dynamic() ? in.load_factor * factor : in.load_factor;
 }
 
 NodalLoadElement::NodalLoadElement(const Load& load, std::function<double(double)> history,

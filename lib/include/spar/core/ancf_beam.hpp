@@ -40,11 +40,13 @@ struct AncfBeam {
   double element_length = 0.0;
 };
 
-/// Adds the beam's blocks and elements. Throws spar::Error for fewer than one element, a
-/// zero-length beam, a y direction along the beam or invalid material or section.
+/// Adds the beam's blocks and elements. Throws spar::Error, before adding anything, for fewer
+/// than one element, a zero-length beam, a y direction along the beam, an invalid material or a
+/// section of no area (a default SectionIntegrals).
 AncfBeam add_ancf_beam(Model& model, const AncfBeamParameters& parameters);
 
-/// The position r of an ANCF node (the first three coordinates of its block).
+/// The position r of an ANCF node (the first three coordinates of its block). Throws spar::Error
+/// for a block that is not a vector block of 12 (a frame, a block that does not exist).
 Eigen::Vector3d ancf_node_position(const Configuration& q, int node);
 
 /// Points r(x, 0, 0) of the reference line, `samples` ≥ 2 equally spaced from start to end (one

@@ -86,11 +86,13 @@ public:
   /// The blocks the element couples, in the order of its local vectors.
   virtual const std::vector<int>& blocks() const = 0;
   /// Fills `out` (already reset to the element's size for `request`) at `in`, after checking
-  /// `in` at this boundary (a spar::InputError names the element and the field): a
-  /// configuration that holds the element's blocks, a finite time, load factor and gravity, and a
-  /// velocity and acceleration, when given, of the configuration's size. May throw spar::Error
-  /// for a configuration the element cannot evaluate (e.g. a beam section turned by π): the
-  /// solvers treat that as a failed iteration.
+  /// `in` and `out` at this boundary (a spar::InputError names the element and the field): a
+  /// configuration that holds the element's blocks, a finite time, load factor and gravity, a
+  /// velocity and acceleration, when given, of the configuration's size, and an output sized by
+  /// ElementOutput::reset for the element's dofs and `request`. A velocity or acceleration with
+  /// a non-finite entry at the element's blocks is a spar::Error, as is a configuration the
+  /// element cannot evaluate (e.g. a beam section turned by π): the solvers treat those as a
+  /// failed iteration. The checks cost a pass over the element's blocks, not the model's.
   void evaluate(const ElementInput& in, const ElementRequest& request, ElementOutput& out) const;
   /// A short name for messages ("beam 1, element 3").
   virtual std::string name() const = 0;

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 namespace spar::core {
@@ -59,7 +60,8 @@ public:
   /// or a block that does not exist.
   int add_element(std::unique_ptr<Element> element);
   int element_count() const { return static_cast<int>(elements_.size()); }
-  const Element& element(int i) const { return *elements_[i]; }
+  /// Element i; throws spar::Error for an index that does not exist.
+  const Element& element(int i) const;
   /// Replaces element i (a slider crossing into the next element, a re-cut mesh) and marks the
   /// structure changed.
   void replace_element(int i, std::unique_ptr<Element> element);
@@ -83,7 +85,8 @@ public:
 
   /// Adds an external load as elements (a distributed load: one per beam element), scaled in
   /// statics by the load factor and in dynamics by `history(t)`. Throws spar::Error for a node or
-  /// beam that does not exist, a node that is not a frame, or a non-finite load.
+  /// beam that does not exist, a node that is not a frame, or a non-finite load. A history that is
+  /// not finite at an evaluation is a spar::InputError there, in statics at t = 0.
   void add_load(const Load& load, LoadHistory history = {});
   int load_count() const { return load_count_; }
 
@@ -111,6 +114,13 @@ public:
   void replace_state(Configuration state);
   /// Replaces the Dirichlet conditions by global dofs of the current layout.
   void set_fixed_dofs(std::vector<int> dofs);
+  /// Throws spar::Error (naming `where`) unless the model can be evaluated as it stands: every
+  /// element's blocks and every fixed dof in the configuration, finite coordinates, and every
+  /// frame's R a rotation (‖RᵀR − I‖_F ≤ lie::rotation_tolerance, det R > 0). state() and
+  /// replace_state let a user write anything there, so the solvers call this where they take the
+  /// state (solve_static, modal_analysis, GeneralizedAlpha's constructor, initialize, step and
+  /// remap). Costs one pass over the blocks and the elements' block lists.
+  void check_consistent(std::string_view where) const;
 
 private:
   void check_block(int block, const char* where) const;

@@ -16,7 +16,9 @@
 
 namespace spar::core {
 
-/// The factor on a load: λ in statics, history(t) in dynamics.
+/// The factor on a load: λ in statics, λ·history(t) in dynamics. Throws spar::InputError for a
+/// history that is not finite at t, in statics too (at ElementInput::time, 0 in solve_static,
+/// where a dynamic run from the static state starts), though statics does not apply it.
 double load_scale(const ElementInput& in, const std::function<double(double)>& history);
 
 /// A NodalForce or NodalMoment on one frame block.
