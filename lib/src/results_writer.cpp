@@ -25,6 +25,7 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <set>
@@ -657,6 +658,16 @@ struct ResultsWriter::Impl {
   /// A constructor that threw after claiming the file leaves it to other writers.
   ~Impl() { detail::release_written_file(claim); }
 
+  /// A constant's values are finite (issue 29: a NaN constant was written silently).
+  void check_constant(const std::string& name, const Eigen::MatrixXd& data) const {
+    for (Eigen::Index j = 0; j < data.cols(); ++j)
+      for (Eigen::Index i = 0; i < data.rows(); ++i)
+        if (!std::isfinite(data(i, j)))
+          throw Error("the constant " + name + " holds " + format_double(data(i, j)) + " at row " + std::to_string(i) +
+                          ", column " + std::to_string(j) + ", which is not finite",
+                      where("write_constant"), "write finite values only");
+  }
+
   // ---- append: checks, then one push per series in plan_series() order ----
 
   [[noreturn]] void size_error(const std::string& field, std::size_t got, const std::string& expected,
@@ -697,6 +708,56 @@ struct ResultsWriter::Impl {
                  "pass one point per layout probe, in the same order");
     check_counters(step);
     check_centerlines(step);
+    check_finite_values(step);
+  }
+
+  /// Throws spar::Error naming `field` if `values` hold a NaN or an infinity (issue 29: a NaN
+  /// probe or position was written silently): the index of the first such entry, as `entry`
+  /// describes it.
+  void check_finite(const std::string& field, const double* values, std::size_t count,
+                    const std::function<std::string(std::size_t)>& entry, bool may_be_undefined = false) const {
+    const double* bad = std::find_if(values, values + count, [may_be_undefined](double x) {
+      return !std::isfinite(x) && !(may_be_undefined && std::isnan(x));
+    });
+    if (bad != values + count)
+      throw Error("step." + field + " " + entry(static_cast<std::size_t>(bad - values)) + " = " + format_double(*bad) +
+                      " is not finite",
+                  where("append") + " at step " + std::to_string(appended),
+                  "check the run that computed it; only a scalar or probe declared may_be_undefined may be NaN");
+  }
+
+  /// Every value the step holds is finite, but NaN in a probe declared may_be_undefined (the
+  /// scalars: check_counters).
+  void check_finite_values(const ResultsStep& step) const {
+    const auto plain = [](std::size_t i) { return "entry " + std::to_string(i); };
+    const auto xyz = [](std::size_t i) { return "component " + std::to_string(i); };
+    if (const Configuration* q = step.configuration; positions >= 0) {
+      for (std::size_t i = 0; i < q->position.size(); ++i) {
+        check_finite("configuration position of node " + std::to_string(i), q->position[i].data(), 3, xyz);
+        check_finite("configuration rotation of node " + std::to_string(i), q->rotation[i].data(), 9, plain);
+      }
+    }
+    if (velocities >= 0) check_finite("velocity", step.velocity->data(), static_cast<std::size_t>(step.velocity->size()), plain);
+    if (multipliers >= 0)
+      check_finite("multipliers", step.multipliers->data(), static_cast<std::size_t>(step.multipliers->size()), plain);
+    for (std::size_t i = 0; i < step.probes.size(); ++i)
+      check_finite("probes[" + std::to_string(i) + "] (" + layout.probes[i].name + ")", step.probes[i].data(), 3, xyz,
+                   layout.probes[i].may_be_undefined);
+    for (std::size_t k = 0; k < step.centerlines.size(); ++k)
+      check_matrix("centerlines[" + std::to_string(k) + "]", step.centerlines[k]);
+    for (std::size_t k = 0; k < step.centerline_fields.size(); ++k)
+      for (std::size_t f = 0; f < step.centerline_fields[k].size(); ++f)
+        check_matrix("centerline_fields[" + std::to_string(k) + "][" + std::to_string(f) + "] (" +
+                         layout.centerline_fields[f].name + ")",
+                     step.centerline_fields[k][f]);
+  }
+
+  /// check_finite for a matrix of points, its entries named by row and column.
+  void check_matrix(const std::string& field, const Eigen::MatrixXd& values) const {
+    const auto rows = static_cast<std::size_t>(values.rows());
+    check_finite(field, values.data(), static_cast<std::size_t>(values.size()), [rows](std::size_t i) {
+      return "row " + std::to_string(i % rows) + ", column " + std::to_string(i / rows);
+    });
   }
 
   /// Scalars are finite (NaN only where declared may_be_undefined); the values of integer
@@ -870,20 +931,30 @@ ResultsWriter& ResultsWriter::operator=(ResultsWriter&& other) noexcept {
   return *this;
 }
 
-void ResultsWriter::write_attribute(const std::string& name, double value) { impl_->queue_attribute({name, value}); }
+ResultsWriter::Impl& ResultsWriter::live(const std::string& function) const {
+  if (!impl_)
+    throw Error("this ResultsWriter was moved from and holds no file", "core::ResultsWriter::" + function,
+                "call it on the writer it was moved to");
+  return *impl_;
+}
+
+void ResultsWriter::write_attribute(const std::string& name, double value) {
+  live("write_attribute").queue_attribute({name, value});
+}
 
 void ResultsWriter::write_attribute(const std::string& name, std::int64_t value) {
-  impl_->queue_attribute({name, value});
+  live("write_attribute").queue_attribute({name, value});
 }
 
 void ResultsWriter::write_attribute(const std::string& name, const std::string& value) {
-  impl_->queue_attribute({name, value});
+  live("write_attribute").queue_attribute({name, value});
 }
 
 void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
                                    const std::string& description) {
-  Impl& impl = *impl_;
+  Impl& impl = live("write_constant");
   impl.require_open("write_constant");
+  impl.check_constant(name, data);
   impl.wait_idle();
   const auto hdf5 = detail::hdf5_calls();
   if (H5Lexists(impl.file, name.c_str(), H5P_DEFAULT) > 0)
@@ -901,7 +972,7 @@ void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixX
 }
 
 void ResultsWriter::append(const ResultsStep& step) {
-  Impl& impl = *impl_;
+  Impl& impl = live("append");
   impl.require_open("append");
   impl.report_failure();
   impl.check_step(step);
@@ -912,7 +983,7 @@ void ResultsWriter::append(const ResultsStep& step) {
 }
 
 void ResultsWriter::flush() {
-  Impl& impl = *impl_;
+  Impl& impl = live("flush");
   impl.require_open("flush");
   impl.hand_over();
   impl.wait_idle();
@@ -931,10 +1002,10 @@ void ResultsWriter::close() {
   impl_->check(released ? 0 : -1, "close the file", "close");
 }
 
-int ResultsWriter::steps_written() const { return impl_->appended; }
+int ResultsWriter::steps_written() const { return live("steps_written").appended; }
 
-int ResultsWriter::steps_flushed() const { return impl_->await_writer(); }
+int ResultsWriter::steps_flushed() const { return live("steps_flushed").await_writer(); }
 
-const std::string& ResultsWriter::xdmf_path() const { return impl_->xdmf_path; }
+const std::string& ResultsWriter::xdmf_path() const { return live("xdmf_path").xdmf_path; }
 
 }  // namespace spar::core

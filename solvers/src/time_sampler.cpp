@@ -5,11 +5,23 @@
 #include <spar/lie/log.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <string>
 
 namespace spar::solvers {
+
+namespace {
+
+/// "0.001 s": the shortest text that reads back as `t`.
+std::string format_seconds(double t) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, t);
+  return std::string(text, result.ptr) + " s";
+}
+
+}  // namespace
 
 TimeSampler::TimeSampler(double interval, std::vector<double> times)
     : interval_(interval), times_(std::move(times)) {}
@@ -21,11 +33,18 @@ TimeSampler TimeSampler::every(double interval) {
   return TimeSampler(interval, {});
 }
 
+// Listed times must increase (issue 29): a list out of order was sorted silently, and a repeated
+// time gave two samples at one time, which ResultsWriter::append refuses in the middle of the run.
 TimeSampler::TimeSampler(std::vector<double> times) : TimeSampler(0.0, std::move(times)) {
-  for (double t : times_)
-    if (!std::isfinite(t))
-      throw Error("an output time is not finite", "solvers::TimeSampler", "give finite times in seconds");
-  std::sort(times_.begin(), times_.end());
+  for (std::size_t k = 0; k < times_.size(); ++k) {
+    const std::string entry = "output time " + std::to_string(k) + " (" + format_seconds(times_[k]) + ")";
+    if (!std::isfinite(times_[k]))
+      throw Error(entry + " is not finite", "solvers::TimeSampler", "give finite times in seconds");
+    if (k > 0 && !(times_[k] > times_[k - 1]))
+      throw Error(entry + " is not after output time " + std::to_string(k - 1) + " (" + format_seconds(times_[k - 1]) +
+                      ")",
+                  "solvers::TimeSampler", "list the output times in increasing order, each once");
+  }
 }
 
 double TimeSampler::output_time(long k) const {

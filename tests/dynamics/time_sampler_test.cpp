@@ -100,11 +100,11 @@ double largest_distance(const SampledRun& a, const SampledRun& b) {
 }  // namespace
 
 TEST_CASE("time sampler: samples between steps converge with the method's order 2", "[dynamics]") {
-  // Every 1 ms over 0.3 s (a listed set, out of order on purpose), from h = 3e-4 and 1.5e-4 s,
+  // Every 1 ms over 0.3 s (a listed set), from h = 3e-4 and 1.5e-4 s,
   // against h = 1e-5 s. The errors at the samples shrink by 4 per halving like the method's own
   // (the interpolation's O(h³) is below it).
   std::vector<double> times;
-  for (int k = 300; k >= 0; --k) times.push_back(1e-3 * k);
+  for (int k = 0; k <= 300; ++k) times.push_back(1e-3 * k);
   const SampledRun reference = pendulum(1e-5, times, 0.3);
   const SampledRun coarse = pendulum(3e-4, times, 0.3);
   const SampledRun fine = pendulum(1.5e-4, times, 0.3);
@@ -122,4 +122,16 @@ TEST_CASE("time sampler: samples between steps converge with the method's order 
 TEST_CASE("time sampler: an interval that is not positive is refused", "[dynamics]") {
   CHECK_THROWS_AS(solvers::TimeSampler::every(0.0), Error);
   CHECK_THROWS_AS(solvers::TimeSampler::every(-1e-3), Error);
+}
+
+TEST_CASE("time sampler: listed times that do not increase are refused", "[dynamics]") {
+  // Issue 29: decreasing times were sorted silently; a repeated time would give two samples at
+  // one time, which the results file refuses later, mid-run.
+  using Catch::Matchers::Contains;
+  CHECK_THROWS_WITH(solvers::TimeSampler({0.0, 2e-3, 1e-3}),
+                    Contains("output time 2 (0.001 s)") && Contains("not after output time 1 (0.002 s)") &&
+                        Contains("solvers::TimeSampler"));
+  CHECK_THROWS_WITH(solvers::TimeSampler({0.0, 1e-3, 1e-3}), Contains("output time 2"));
+  CHECK_THROWS_WITH(solvers::TimeSampler({0.0, NAN}), Contains("output time 1") && Contains("not finite"));
+  CHECK_NOTHROW(solvers::TimeSampler({-1.0, 0.0, 1e-3}));
 }

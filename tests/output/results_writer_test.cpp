@@ -245,6 +245,40 @@ TEST_CASE("ResultsWriter rejects steps that do not match the layout", "[output]"
     step.centerline_fields.clear();
     CHECK_THROWS_WITH(writer.append(step), Contains("step.centerline_fields has 0 entries, expected 2 beams"));
   }
+  // NaN is a value only where the layout declares it may be undefined (issue 29: a NaN probe and
+  // a NaN position were written silently).
+  SECTION("a NaN probe") {
+    step.probes[0].y() = NAN;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.probes[0] (tip)") && Contains("is not finite") &&
+                                               Contains("at step 1") && Contains("may_be_undefined"));
+    ResultsLayout undefined = spar::test::sample_layout();
+    undefined.probes[0].may_be_undefined = true;
+    ResultsWriter lenient(folder.file("undefined.h5"), undefined, 2);
+    CHECK_NOTHROW(lenient.append(step));
+    step.probes[0].y() = INFINITY;
+    step.time += 1.0;
+    CHECK_THROWS_WITH(lenient.append(step), Contains("step.probes[0] (tip) component 1 = inf is not finite"));
+  }
+  SECTION("a NaN or infinite value in the configuration, velocity, multipliers, centerlines or fields") {
+    sample.configuration.position[2].x() = NAN;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.configuration position of node 2") &&
+                                               Contains("is not finite") && Contains("at step 1"));
+    sample.configuration.position[2].x() = 0;
+    sample.configuration.rotation[1](0, 0) = NAN;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.configuration rotation of node 1"));
+    sample.configuration.rotation[1] = Eigen::Matrix3d::Identity();
+    sample.velocity(4) = INFINITY;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.velocity") && Contains("entry 4"));
+    sample.velocity(4) = 0;
+    sample.multipliers(1) = NAN;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.multipliers") && Contains("entry 1"));
+    sample.multipliers(1) = 0;
+    step.centerlines[1](3, 2) = NAN;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerlines[1]") && Contains("row 3"));
+    step.centerlines[1](3, 2) = 0;
+    step.centerline_fields[0][1](2, 0) = NAN;
+    CHECK_THROWS_WITH(writer.append(step), Contains("step.centerline_fields[0][1] (velocity)") && Contains("row 2"));
+  }
   SECTION("time") {
     step.time = SampleStep(0).step.time;
     CHECK_THROWS_WITH(writer.append(step), Contains("step.time") && Contains("not after the previous step"));
@@ -322,6 +356,9 @@ TEST_CASE("ResultsWriter reports bad layouts, paths and late writes", "[output]"
     CHECK_THROWS_WITH(writer.write_attribute("", 1.0), Contains("the attribute name has 0 characters"));
     CHECK_THROWS_WITH(writer.write_attribute(std::string(65001, 'x'), 1.0),
                       Contains("the attribute name has 65001 characters"));
+    CHECK_THROWS_WITH(writer.write_constant("reference", Eigen::Matrix2d::Constant(NAN), "m", "r"),
+                      Contains("write_constant") && Contains("reference") && Contains("row 0, column 0") &&
+                          Contains("is not finite"));
     writer.close();
     CHECK_THROWS_WITH(writer.append(SampleStep(0).step), Contains("closed"));
     CHECK_THROWS_WITH(writer.write_attribute("x", 1.0), Contains("closed"));
@@ -391,6 +428,21 @@ TEST_CASE("A moved ResultsWriter keeps writing the same file", "[output]") {
   }
   const ReadOnlyFile file(path);
   check_round_trip(file, 2);
+}
+
+TEST_CASE("A moved-from ResultsWriter refuses every call with an error, not a crash", "[output]") {
+  // Issue 29: append on a moved-from writer dereferenced its null state (SIGSEGV).
+  const spar::test::ScratchFolder folder("moved_from");
+  ResultsWriter first(folder.file("run.h5"), spar::test::sample_layout(), 10);
+  const ResultsWriter second = std::move(first);
+  CHECK_THROWS_WITH(first.append(SampleStep(0).step), Contains("was moved from") && Contains("core::ResultsWriter::append"));
+  CHECK_THROWS_WITH(first.flush(), Contains("was moved from") && Contains("core::ResultsWriter::flush"));
+  CHECK_THROWS_WITH(first.write_attribute("x", 1.0), Contains("was moved from") && Contains("core::ResultsWriter::write_attribute"));
+  CHECK_THROWS_WITH(first.write_constant("c", Eigen::MatrixXd::Zero(1, 1), "m", "c"), Contains("was moved from") && Contains("core::ResultsWriter::write_constant"));
+  CHECK_THROWS_WITH(first.steps_written(), Contains("was moved from") && Contains("core::ResultsWriter::steps_written"));
+  CHECK_THROWS_WITH(first.steps_flushed(), Contains("was moved from") && Contains("core::ResultsWriter::steps_flushed"));
+  CHECK_THROWS_WITH(first.xdmf_path(), Contains("was moved from") && Contains("core::ResultsWriter::xdmf_path"));
+  first.close();  // closing what it no longer holds does nothing, as the destructor does
 }
 
 TEST_CASE("A second run replaces the files, and writes through a symbolic link", "[output]") {

@@ -31,7 +31,8 @@ struct ResultsQuantity {
   bool integer = false;
   /// NaN marks a step where the quantity is not defined (e.g. the material coordinate of a slider
   /// that has left its beam). Without this flag a NaN or infinite value is refused: a NaN result
-  /// is never written silently. Scalars only.
+  /// is never written silently. Scalars and probes; every other value of a step, and a
+  /// constant, must be finite.
   bool may_be_undefined = false;
 };
 
@@ -161,6 +162,8 @@ public:
   /// Flushes, joins the writer thread and closes the file; later calls do nothing, append/write_*
   /// then throw.
   void close();
+  /// A writer that was moved from holds nothing: every call but close() (which does nothing) and
+  /// the destructor throws spar::Error.
   /// Steps appended so far (written or still buffered).
   int steps_written() const;
   /// Steps on disk (written, H5Fflush-ed and in the sidecar): waits for the writer thread to
@@ -171,6 +174,8 @@ public:
 
 private:
   struct Impl;
+  /// The writer's state; spar::Error naming `function` if this writer was moved from.
+  Impl& live(const std::string& function) const;
   std::unique_ptr<Impl> impl_;
 };
 

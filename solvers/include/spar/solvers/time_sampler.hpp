@@ -41,7 +41,8 @@ public:
   /// Every `interval` from t = 0: times k · interval, k = 0, 1, … (computed, not accumulated).
   /// spar::Error for an interval that is not positive and finite.
   static TimeSampler every(double interval);
-  /// At the given times (sorted ascending on construction; spar::Error for a non-finite one).
+  /// At the given times, in increasing order (spar::Error naming the first time that is not
+  /// finite or not after the one before).
   explicit TimeSampler(std::vector<double> times);
 
   /// The samples of the step just taken (see the class comment); valid until the next call.
