@@ -253,3 +253,54 @@ TEST_CASE("sliding joint: zeta in metres keeps the start-up matrix's conditionin
   CHECK(std::abs(conditions[1] - conditions[0]) <= 1e-10 * conditions[0]);
   CHECK(std::abs(conditions[2] - conditions[0]) <= 1e-10 * conditions[0]);
 }
+
+TEST_CASE("sliding joint: a carrier 100 m from the origin behaves as the same one at the origin",
+          "[joints][sliding]") {
+  // Issue 29: the carrier's reference length (NurbsCurve::arc_length) never returned 100 m away.
+  // The same carrier (10 elements: with 5 the old test happened to pass) and slider, once at the
+  // origin and once moved by `offset`.
+  const Eigen::Vector3d offset(100.0, -40.0, 30.0);
+  const iga::NurbsCurve<3> arc = test::quarter_circle_carrier(1.5, 10, 2, 1);
+  const auto placed = [&](const Eigen::Vector3d& shift, core::Model& model) {
+    model.add_beam({.centerline = iga::NurbsCurve<3>(arc.knots(), arc.control_points().colwise() + shift,
+                                                     arc.weights()),
+                    .stiffness = test::generic_stiffness()});
+    return model.add_frame(shift + Eigen::Vector3d(0.3, -0.2, 0.5), lie::exp(Eigen::Vector3d(0.3, 0.2, -0.4)));
+  };
+  core::Model near_model, far_model;
+  const int slider = placed(Eigen::Vector3d::Zero(), near_model);
+  REQUIRE(placed(offset, far_model) == slider);
+  const joints::SlidingJointParameters p{.slider = {.node = slider, .offset = Eigen::Vector3d(0.1, -0.2, 0.15)},
+                                         .carrier = 0, .zeta = 0.8, .name = "test slider"};
+  joints::SlidingJoint near(p, near_model), far(p, far_model);
+  // Moving the control points by 100 m rounds them by ≤ √3/2 ulp(100) = 1.2e-14 m, which changes
+  // the length by ≤ (π/2 + 2) · 1.2e-14 m; each length is computed to 1e-14: 1e-13 relative.
+  CHECK(std::abs(far.carrier_length() - near.carrier_length()) <= 1e-13 * near.carrier_length());
+  // Φ, B and ∂(Bᵀλ)/∂Δ at the same deformed configurations, moved by the offset: they depend on
+  // differences of positions only. Round-off of sums Σ N_I,ζ x_I with |x_I| ≈ 110 and
+  // Σ|N_I,ζ| ≲ 2p/h_ζ ≈ 17 (h_ζ = L₀/10 ≈ 0.24 m): ≈ 1.1e-16 · 110 · 17 ≈ 2e-13 per entry of
+  // size ≲ 10; 1e-12 leaves a factor 5.
+  test::RandomRotations random(1209);
+  std::string description;
+  for (const double zeta : {0.1, 0.8, 1.9}) {
+    core::Configuration q_near = perturbed(near_model.state(), random);
+    q_near.vector(near.zeta_block())(0) = zeta;
+    core::Configuration q_far = q_near;
+    for (int b = 0; b < q_far.block_count(); ++b)
+      if (q_far.is_frame(b)) q_far.position[b] += offset;
+    const Eigen::VectorXd no_velocity = Eigen::VectorXd::Zero(q_near.dof_count());
+    near.update_structure(q_near, no_velocity, 0.0, description);
+    far.update_structure(q_far, no_velocity, 0.0, description);
+    INFO("zeta = " << zeta);
+    REQUIRE(far.window_element() == near.window_element());
+    CHECK(test::relative_error(test::value(far, q_far, 0), test::value(near, q_near, 0)) <= 1e-12);
+    CHECK(test::relative_error(test::jacobian(far, q_far, 0), test::jacobian(near, q_near, 0)) <=
+          1e-12);
+    const Eigen::Vector3d lambda(0.3, -1.2, 0.7);
+    const Eigen::Index n = test::local_dofs(near, q_near);
+    Eigen::MatrixXd K_near(n, n), K_far(n, n);
+    near.multiplier_tangent(q_near, 0, lambda, K_near);
+    far.multiplier_tangent(q_far, 0, lambda, K_far);
+    CHECK(test::relative_error(K_far, K_near) <= 1e-12);
+  }
+}
