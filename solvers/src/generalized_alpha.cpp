@@ -83,6 +83,9 @@ struct GeneralizedAlpha::Implementation {
   double t = 0.0;
   Eigen::VectorXd velocity, acceleration, algorithmic_acceleration, lambda;
   bool initialized = false;
+  /// True from an initialize() until the next completed step or remap: a second initialize() in
+  /// between would only restart the method where it stands (dropping perturbed starting values).
+  bool just_initialized = false;
   /// The integrator's state at the start of a step, restored when the step fails.
   struct Snapshot {
     core::Configuration q;
@@ -972,9 +975,14 @@ void GeneralizedAlpha::set_velocity(int block, const Eigen::VectorXd& velocity) 
 }
 
 void GeneralizedAlpha::initialize() {
-  impl_->model.check_consistent("solvers::GeneralizedAlpha::initialize");
+  const char* where = "solvers::GeneralizedAlpha::initialize";
+  if (impl_->just_initialized)
+    throw Error("initialize() was already called at t = " + significant(impl_->t) + ", and no step or remap followed",
+                where, "call initialize() once before the first step; again only to restart after steps or a remap");
+  impl_->model.check_consistent(where);
   const auto start = std::chrono::steady_clock::now();
   impl_->initialize();
+  impl_->just_initialized = true;
   impl_->counters.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -984,6 +992,7 @@ void GeneralizedAlpha::step() {
   if (!impl_->initialized) initialize();
   const auto start = std::chrono::steady_clock::now();
   impl_->step_with_events();
+  impl_->just_initialized = false;
   impl_->counters.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -1005,6 +1014,7 @@ void GeneralizedAlpha::remap(const Eigen::MatrixXd& P, const Eigen::VectorXd& in
     impl_->options.increment_units = increment_units;
   }
   impl_->rebuild(&P);
+  impl_->just_initialized = false;
 }
 
 const std::vector<std::pair<double, std::string>>& GeneralizedAlpha::events() const {

@@ -181,15 +181,20 @@ public:
   /// onto Φ = 0, velocities onto B v + Φ_t = 0, least change in the mass metric; spar::Error
   /// when the positions would move by more than initial_assembly_tolerance or do not converge,
   /// the state then left as given), then computes consistent initial accelerations and
-  /// multipliers from M v̇ + Bᵀλ = −f and B v̇ = −c. Done by the first step() if not called. Called again during a run (after a remap
+  /// multipliers from M v̇ + Bᵀλ = −f and B v̇ = −c. Done by the first step() if not called (the
+  /// same run, bit for bit). Called again during a run (after a remap
   /// whose map P does not carry the accelerations, e.g. an ALE re-mesh), it restarts the method
-  /// from consistent accelerations at the current state; the energy balance carries on, and a
-  /// jump of the energy at the re-mesh shows in the numerical dissipation.
+  /// from consistent accelerations at the current state (a = v̇; the initial assembly and the
+  /// perturbed starting values are the first call's only); the energy balance carries on, and a
+  /// jump of the energy at the re-mesh shows in the numerical dissipation. A call with no
+  /// completed step or remap since the last one is a spar::Error: it could only restart the
+  /// method where it stands. Also a spar::Error for a model that Model::check_consistent refuses.
   void initialize();
   /// Advances by one time step (in halves, recursively, if Newton fails). Throws spar::Error
   /// naming the step, the time and the likely cause when even max_cutbacks halvings fail; the
   /// state, velocities, accelerations, multipliers and time are then those before the call (no
-  /// converged half-step of the failed step is kept).
+  /// converged half-step of the failed step is kept). Refuses, before anything, a model that
+  /// Model::check_consistent refuses (a block written into model.state() that is no rotation).
   void step();
 
   double time() const;
