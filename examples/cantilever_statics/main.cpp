@@ -70,7 +70,7 @@ int main(int argc, char** argv) try {
   const double load = cli.number("--load", 2 * std::numbers::pi,
                                  "M L/EI (rollup) or P L^2/EI (tip-load)",
                                  examples::Range::between(-100, 100));
-  const int elements = cli.integer("--elements", 16, "number of NURBS elements", 1, examples::element_limit(examples::bytes_per_element));
+  const int elements = cli.elements("--elements", 16, "number of NURBS elements", 1, examples::memory_use::cantilever_statics);
   const int degree = cli.integer("--degree", 3, "NURBS degree p (C^{p-1} continuity)", 1, iga::max_degree);
   const int load_steps = cli.integer("--steps", 10, "initial number of load steps", 1, 100000);
   const double length = cli.number("--length", 1.0, "beam length L [m]", examples::Range::positive(1e3));
@@ -78,6 +78,7 @@ int main(int argc, char** argv) try {
                                     examples::Range::positive(1));
   const std::string out = cli.output_folder("--out", "results/cantilever_statics", "output folder");
   if (!cli.finish()) return 0;
+  examples::require_slender_beam(length, "--length", width, "--width", width, "--width");  // before solving
 
   // 2. Build the beam: straight along +X (open-uniform C^{p-1} NURBS), steel square section.
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};

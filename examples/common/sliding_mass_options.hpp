@@ -16,11 +16,13 @@ struct SlidingMassOptions {
   std::string strategy;  ///< the iteration matrix: update | frozen | modified
 };
 
-/// Reads --element, --elements, --h, --t-end, --rho-inf and --strategy with the example's defaults.
-inline SlidingMassOptions sliding_mass_options(CommandLine& cli, int default_elements, double default_t_end) {
+/// Reads --element, --elements (at most what `memory`, the example's, lets fit), --h, --t-end,
+/// --rho-inf and --strategy with the example's defaults.
+inline SlidingMassOptions sliding_mass_options(CommandLine& cli, int default_elements, double default_t_end,
+                                               const MemoryUse& memory) {
   SlidingMassOptions o;
   o.kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf", {"ale-rancf", "ale-ancf"});
-  o.elements = cli.integer("--elements", default_elements, "elements", 3, element_limit(bytes_per_element));
+  o.elements = cli.elements("--elements", default_elements, "elements", 3, memory);
   o.h = cli.number("--h", 1e-3, "time step [s]", Range::positive());
   o.t_end = cli.number("--t-end", default_t_end, "end time [s]", Range::positive());
   o.rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)", Range::between(0, 1));

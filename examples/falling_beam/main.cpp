@@ -40,7 +40,7 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "falling_beam: a lumped mass sliding off a falling cantilever (000 §6.1)");
-  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 20, 1.0);
+  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 20, 1.0, examples::memory_use::falling_beam);
   const std::string out = cli.output_folder("--out", "results/falling_beam", "output folder");
   if (!cli.finish()) return 0;
   examples::time_steps(o.h, o.t_end);  // a span of no steps or of too many is refused

@@ -68,7 +68,7 @@ int main(int argc, char** argv) try {
   const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
   const double rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)",
                                           examples::Range::between(0, 1));
-  const int elements = cli.integer("--elements", 8, "cubic NURBS elements", 1, examples::element_limit(examples::bytes_per_element));
+  const int elements = cli.elements("--elements", 8, "cubic NURBS elements", 1, examples::memory_use::flexible_pendulum);
   const double width = cli.number("--width", 0.03, "section width, out of the plane of the swing (Y) [m]",
                                     examples::Range::positive(0.5));
   const double thickness = cli.number("--thickness", 0.001, "section thickness, in the plane of the swing (Z) [m]",

@@ -46,14 +46,19 @@ double timoshenko_pinned(int k, double length, double EI, double kGA, double rho
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "modal_beam: modes of a pinned-pinned steel beam against Timoshenko's");
-  const double length = cli.number("--length", 1.0, "beam length [m]", examples::Range::positive());
-  const double width = cli.number("--width", 0.02, "section width, along the section axis 2 (Y) [m]", examples::Range::positive());
-  const double height = cli.number("--height", 0.01, "section height, along the section axis 3 (Z) [m]", examples::Range::positive());
-  const int elements = cli.integer("--elements", 64, "cubic NURBS elements", 1,
-                                   examples::element_limit(examples::bytes_per_element));
+  //    The ranges of the other examples (docs/errors.md): lengths up to 10³ m (--length 1e300 ended
+  //    in "the matrix is not orthogonal"), section sides up to 1 m.
+  const double length = cli.number("--length", 1.0, "beam length [m]", examples::Range::positive(1e3));
+  const double width = cli.number("--width", 0.02, "section width, along the section axis 2 (Y) [m]", examples::Range::positive(1));
+  const double height = cli.number("--height", 0.01, "section height, along the section axis 3 (Z) [m]", examples::Range::positive(1));
+  const int elements = cli.elements("--elements", 64, "cubic NURBS elements", 1, examples::memory_use::modal_beam);
   const int mode_count = cli.integer("--modes", 12, "lowest modes to compute", 1, 1000);
   const std::string out = cli.output_folder("--out", "results/modal_beam", "output folder");
   if (!cli.finish()) return 0;
+  //    A slender beam in both planes: Timoshenko's frequencies are a beam's.
+  const bool width_thinner = width <= height;
+  examples::require_slender_beam(length, "--length", std::min(width, height), width_thinner ? "--width" : "--height",
+                                 std::max(width, height), width_thinner ? "--height" : "--width");
 
   // 2. The beam and its two pins.
   const core::Material steel{.young_modulus = 210e9, .poisson_ratio = 0.3, .density = 7850};

@@ -35,7 +35,7 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "semicircular_beam: a lumped mass sliding on a suspended semicircular beam (000 §6.3)");
-  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 16, 3.0);
+  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 16, 3.0, examples::memory_use::semicircular_beam);
   const std::string out = cli.output_folder("--out", "results/semicircular_beam", "output folder");
   if (!cli.finish()) return 0;
   examples::time_steps(o.h, o.t_end);  // a span of no steps or of too many is refused

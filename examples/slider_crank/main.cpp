@@ -46,8 +46,7 @@ int main(int argc, char** argv) try {
   const double t_end = cli.number("--t-end", 0.2, "end time [s]", examples::Range::positive());
   const std::string strategy = cli.text("--strategy", "frozen", "iteration matrix: update | frozen | modified",
                                           {"update", "frozen", "modified"});
-  const int elements = cli.integer("--elements", 6, "cubic NURBS elements per rod", 1,
-                                     examples::element_limit(examples::bytes_per_element));
+  const int elements = cli.elements("--elements", 6, "cubic NURBS elements per rod", 1, examples::memory_use::slider_crank);
   const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
   const examples::NewtonTest newton = examples::newton_test_options(cli);
   const int max_iterations = cli.integer("--max-iterations", 25, "Newton iterations before a step is cut back", 1, 1000);

@@ -43,10 +43,9 @@ int main(int argc, char** argv) try {
   const double h = cli.number("--h", 1e-3, "time step [s]", examples::Range::positive());
   const double t_end = cli.number("--t-end", 3.0, "end time if the slider has not reached B by then [s]",
                                  examples::Range::positive());
-  const int elements = cli.integer("--elements", 16, "NURBS elements of the carrier beam", 1,
-                                     examples::element_limit(examples::bytes_per_element));
-  const int sliding_elements = cli.integer("--sliding-elements", 2, "NURBS elements of the sliding beam", 1,
-                                             examples::element_limit(examples::bytes_per_element));
+  const int elements = cli.elements("--elements", 16, "NURBS elements of the carrier beam", 1, examples::memory_use::sliding_beam);
+  const int sliding_elements = cli.elements("--sliding-elements", 2, "NURBS elements of the sliding beam", 1,
+                                            examples::memory_use::sliding_beam);
   const int degree = cli.integer("--degree", 2, "NURBS degree of both beams (003: 2)", 1, iga::max_degree);
   const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
                                           {"update", "frozen", "modified"});
@@ -55,6 +54,8 @@ int main(int argc, char** argv) try {
                                         examples::newton_tolerances);
   const std::string out = cli.output_folder("--out", "results/sliding_beam", "output folder");
   if (!cli.finish()) return 0;
+  examples::require_memory(static_cast<double>(elements) + sliding_elements, examples::memory_use::sliding_beam,
+                           "options --elements, --sliding-elements");  // the two beams together
   examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. Build the model of 003 Table 3 (examples/sliding_beam/sliding_beam_model.hpp): the two

@@ -33,7 +33,7 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   examples::CommandLine cli(argc, argv, "suspended_beam: a lumped mass sliding on a pinned-pinned beam (000 §6.2)");
-  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 3, 2.0);
+  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 3, 2.0, examples::memory_use::suspended_beam);
   const std::string slopes = cli.text("--slopes", "continuous",
                                       "at the sliding node (000 eq. (40)): continuous (one slope) or discontinuous "
                                       "(a slope per side, equal magnitudes: a hinge)",

@@ -55,10 +55,10 @@ int main(int argc, char** argv) try {
                                   "end time [s] (case 1 ends earlier, when the sliders have locked)",
                                   examples::Range::positive());
   examples::TrussParameters parameters;
-  //    28 members per --elements (examples::bytes_per_element is a bound per beam element).
-  parameters.elements = cli.integer("--elements", driven ? 4 : 1,
-                                    "quadratic NURBS elements per member (003: 1 in case 1, 4 in case 2)", 1,
-                                    std::max(1, examples::element_limit(examples::bytes_per_element) / 28));
+  //    28 members per --elements (examples::memory_use::truss_deployment is per --elements).
+  parameters.elements = cli.elements("--elements", driven ? 4 : 1,
+                                     "quadratic NURBS elements per member (003: 1 in case 1, 4 in case 2)", 1,
+                                     examples::memory_use::truss_deployment);
   const std::string strategy = cli.text("--strategy", "update", "iteration matrix", {"update", "frozen", "modified"});
   const std::string linear_solver = cli.text("--linear-solver", "klu", "sparse direct solver", {"klu", "umfpack", "eigen-lu"});
   const bool substructuring = cli.text("--substructuring", "on", "KLU by members where cheaper (docs/dynamics.md D12)", {"on", "off"}) == "on";
@@ -74,8 +74,17 @@ int main(int argc, char** argv) try {
   const std::string out = cli.output_folder("--out", driven ? "results/truss_deployment/case2_" + law
                                                    : std::string("results/truss_deployment/case1"),
                                    "output folder");
+  //    Case 1 has no law (gravity deploys the unit); substructuring is a way of using KLU.
+  cli.applies_only_when("--law", "--case", {"2"});
+  cli.applies_only_when("--t-f", "--case", {"2"});
+  cli.applies_only_when("--substructuring", "--linear-solver", {"klu"});
   if (!cli.finish()) return 0;
   examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  if (driven)
+    examples::require_within_run(t_f, "--t-f", "the law would not finish, and the unit would not deploy, by the end",
+                                 t_end);
+  examples::require_within_run(output_interval, "--output-interval",
+                               "the file would hold the members' centerlines at t = 0 only", t_end);
 
   // 2. Build the folded unit of 003 Table 4 (truss_model.hpp), then the case's load: gravity
   //    along X, or the drivers of the law that hand over to the locks.
