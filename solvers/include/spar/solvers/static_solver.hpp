@@ -68,7 +68,11 @@ private:
 
 /// Brings model.state() into equilibrium with the loads and gravity, both scaled by the load
 /// factor, at load factor 1, subject to `constraints` (Φ(q, 0) = 0, with multipliers). Returns
-/// what it did; throws ConvergenceError (model at the last converged load factor) if a step fails.
+/// what it did; throws ConvergenceError (model at the last converged load factor) if a step fails,
+/// its message opening with "the load is too large for the model" when Newton's iterates left the
+/// range of double (a tip force of 1e200 N on a steel cantilever). Every other exception from a
+/// step (spar::InputError for a load history that is not finite at t = 0) also leaves the state
+/// of the last converged load factor. Refuses at once a model that Model::check_consistent refuses.
 StaticReport solve_static(core::Model& model, const StaticOptions& options = {},
                           const std::vector<joints::Constraint*>& constraints = {});
 
