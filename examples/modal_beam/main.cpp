@@ -55,10 +55,12 @@ int main(int argc, char** argv) try {
   const int mode_count = cli.integer("--modes", 12, "lowest modes to compute", 1, 1000);
   const std::string out = cli.output_folder("--out", "results/modal_beam", "output folder");
   if (!cli.finish()) return 0;
-  //    A slender beam in both planes: Timoshenko's frequencies are a beam's.
+  //    A slender beam in both planes: Timoshenko's frequencies are a beam's. The dense eigensolver
+  //    loses digits as (L/t)²: the bending modes' largest relative error is 2.5e-6, 2.4e-4, 2.2e-3
+  //    at L/t = 100, 10³, 3·10³ (64 elements, L = 10⁻³ to 10³ m) and 5-68 % at 10⁴, so at most 3·10³.
   const bool width_thinner = width <= height;
   examples::require_slender_beam(length, "--length", std::min(width, height), width_thinner ? "--width" : "--height",
-                                 std::max(width, height), width_thinner ? "--height" : "--width");
+                                 std::max(width, height), width_thinner ? "--height" : "--width", 3e3);
 
   // 2. The beam and its two pins.
   const core::Material steel{.young_modulus = 210e9, .poisson_ratio = 0.3, .density = 7850};

@@ -281,4 +281,7 @@ TEST_CASE("a beam that is no slender beam is refused before solving (issue 29)",
   CHECK_NOTHROW(require_slender_beam(1e3, "--length", 0.1, "--width", 0.1, "--width"));
   CHECK_NOTHROW(require_slender_beam(1.0, "--length", 0.01, "--height", 0.02, "--width"));  // modal_beam's default
   CHECK_THROWS(require_slender_beam(2.9, "--length", 0.01, "--height", 1.0, "--width"));      // a 1 m deep section
+  // An example's own upper bound (modal_beam: 3·10³).
+  CHECK_THROWS_WITH(require_slender_beam(1e3, "--length", 0.1, "--width", 0.1, "--height", 3e3),
+                    Catch::Contains("more than 3000"));
 }
