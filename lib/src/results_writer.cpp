@@ -3,6 +3,7 @@
 #include "fresh_file.hpp"
 #include "hdf5_attributes.hpp"
 #include "hdf5_lifetime.hpp"
+#include "spare_copy.hpp"
 #include "written_files.hpp"
 #include "xdmf_sidecar.hpp"
 
@@ -16,6 +17,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -61,7 +63,7 @@ struct Series {
   std::string description;     ///< stored as the dataset's `description` attribute
   std::vector<hsize_t> shape;  ///< per-step shape, {} for one scalar per step
   bool integer = false;        ///< stored as int32 (counters), else as doubles
-  hid_t dataset = H5I_INVALID_HID;
+  std::array<hid_t, 2> datasets{H5I_INVALID_HID, H5I_INVALID_HID};  ///< in either copy of the file
   std::vector<double> buffer;  ///< steps not yet handed to the writer thread, row-major
 
   hsize_t values_per_step() const {
@@ -112,18 +114,23 @@ std::string creation_failure_reason(const std::string& path, const std::string& 
   return otherwise;
 }
 
-/// Opens `path` for writing as the writer thread will, creating it (empty, with the permissions
-/// HDF5 or the sidecar would give it) if it does not exist, so that a path which cannot be
-/// written is reported by the constructor; the writer thread then makes the file itself. An
-/// existing file is not truncated here: freeing its blocks takes 1-2 ms for a few MB, which the
-/// writer thread spends instead, off the run's thread, when it removes the old file and makes a
-/// new one (fresh_file.hpp). Throws spar::Error naming the path and the reason.
-void check_writable(const std::string& path, mode_t mode, const std::string& what, const std::string& where) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, mode);
+/// Opens the spare copy of `target` (the file `path` names, spare_copy.hpp) for writing as the
+/// writer thread will, creating it (empty, with the permissions HDF5 or the sidecar would give
+/// it) if it does not exist, so that a path which cannot be written is reported by the
+/// constructor; the writer thread then makes the file itself. `target` itself is not touched:
+/// until the writer thread replaces it, it stays whatever it was (an earlier run's results), so a
+/// kill leaves no empty file under its name. Throws spar::Error naming `path` and the reason.
+void check_writable(const std::string& path, const std::string& target, mode_t mode, const std::string& what,
+                    const std::string& where) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(target, ec))
+    throw Error("cannot create " + what + " " + path + ": it is a folder", where, "pass the path of a file");
+  const std::string spare = detail::spare_path(target);
+  const int fd = ::open(spare.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, mode);
   if (fd < 0) {
     const std::string system_reason = std::strerror(errno);
-    throw Error("cannot create " + what + " " + path + ": " + creation_failure_reason(path, system_reason),
-                where, "pass a path in an existing, writable folder");
+    throw Error("cannot create " + what + " " + path + ": " + creation_failure_reason(spare, system_reason), where,
+                "pass a path in an existing, writable folder");
   }
   ::close(fd);
 }
@@ -229,15 +236,19 @@ std::string sidecar_path(const std::string& path) {
 }  // namespace
 
 struct ResultsWriter::Impl {
-  std::string path;
-  std::string xdmf_path;
+  std::string path;       ///< as the caller gave it
+  std::string xdmf_path;  ///< as xdmf_path() returns it
+  /// The files written: `path` and `xdmf_path`, or the files they link to (write_target).
+  std::string target, xdmf_target;
   ResultsLayout layout;
   int flush_every;
   bool closed = false;  ///< close() has run or an error closed the file (the caller's thread only)
   std::string claim;    ///< the key of the HDF5 file in detail::written_files, until it is closed
-  /// The HDF5 file: made by the writer thread's first job; the caller uses it only with the
-  /// writer thread idle or joined.
-  hid_t file = H5I_INVALID_HID;
+  /// The two copies of the HDF5 file (spare_copy.hpp): made by the writer thread's first job;
+  /// the caller uses them only with the writer thread idle or joined. Copy `h5_spare` is named
+  /// spare_path(target), the other `target`; likewise the sidecars.
+  std::array<hid_t, 2> files{H5I_INVALID_HID, H5I_INVALID_HID};
+  int h5_spare = 0;
   std::vector<Series> series;  ///< /time first; the others in append order
   int positions = -1, quaternions = -1, velocities = -1, multipliers = -1;
   int first_scalar = 0, first_probe = 0, first_centerline = 0;
@@ -248,7 +259,9 @@ struct ResultsWriter::Impl {
   /// length takes the model's extent.
   std::vector<Eigen::Matrix3Xd> shape_corners;
   double last_time = 0;        ///< the last appended step's time
-  std::unique_ptr<detail::XdmfSidecar> sidecar;  ///< used by the writer thread only, once it runs
+  /// The two copies of the sidecar: used by the writer thread only, once it runs.
+  std::array<std::unique_ptr<detail::XdmfSidecar>, 2> sidecars;
+  int xmf_spare = 0;
   int appended = 0;
   int handed = 0;              ///< steps handed to the writer thread (the next block's first row)
 
@@ -384,39 +397,67 @@ struct ResultsWriter::Impl {
 
   static int vertex_count(const RigidBodyShape& shape) { return shape.kind == RigidBodyShape::Kind::box ? 8 : 6; }
 
-  void create_file() {
+  /// Copy `c` of the HDF5 file, under the spare's name: every dataset of the layout with zero
+  /// steps, the sidecar's topologies and the schema, flushed.
+  void create_copy(int c) {
     const Hid access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
 #if H5_VERSION_GE(1, 10, 7)
     // No lock: the file can be read (after a flush) while the run goes on.
     H5Pset_file_locking(access, false, true);
 #endif
-    detail::remove_for_rewrite(path);  // a new file: its close does not start ext4's write-back
-    file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
-    if (file < 0)
+    const std::string spare = detail::spare_path(target);
+    detail::remove_for_rewrite(spare);  // a new file: its close does not start ext4's write-back
+    files[c] = H5Fcreate(spare.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
+    if (files[c] < 0)
       throw Error("cannot create the results file " + path + ": " +
-                      creation_failure_reason(path, "HDF5 refused to create it (the file may be open in another "
-                                                    "program, or the disk full)"),
+                      creation_failure_reason(spare, "HDF5 refused to create it (the file may be open in another "
+                                                     "program, or the disk full)"),
                   "core::ResultsWriter(" + path + ")", "pass a path in an existing, writable folder");
+    for (Series& s : series) create_dataset(s, c);
+    write_topologies(files[c]);
+    check(detail::write_string_attribute(files[c], "schema", "spar.results/2"), "write attribute schema", "ResultsWriter");
+    check(H5Fflush(files[c], H5F_SCOPE_GLOBAL), "flush", "ResultsWriter");
   }
 
-  /// The writer thread's first job: the HDF5 file, every dataset of the layout with zero steps,
-  /// the sidecar's topologies and the schema, H5Fflush, then the empty sidecar.
+  /// The writer thread's first job: both copies of the HDF5 file and of the sidecar. The first
+  /// replaces the files of an earlier run (the sidecar first, so that it never lists steps the
+  /// HDF5 file does not hold), the second stays the spare.
   void create_files() {
-    {
-      const auto hdf5 = detail::hdf5_calls();
-      create_file();
-      for (Series& s : series) create_dataset(s);
-      write_topologies();
-      check(detail::write_string_attribute(file, "schema", "spar.results/2"), "write attribute schema", "ResultsWriter");
-      check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "ResultsWriter");
+    const std::string h5_name = std::filesystem::path(path).filename().string();
+    for (int c = 0; c < 2; ++c) {
+      {
+        const auto hdf5 = detail::hdf5_calls();
+        create_copy(c);
+      }
+      sidecars[c] = std::make_unique<detail::XdmfSidecar>(detail::spare_path(xdmf_target), h5_name, layout);
+      if (c == 1) continue;
+      detail::replace_file(detail::spare_path(xdmf_target), xdmf_target, where("ResultsWriter"));
+      detail::replace_file(detail::spare_path(target), target, where("ResultsWriter"));
     }
-    sidecar = std::make_unique<detail::XdmfSidecar>(xdmf_path, std::filesystem::path(path).filename().string(), layout);
+    h5_spare = xmf_spare = 1;
   }
 
-  /// The writer thread's job for a root attribute: writes it, replacing one of the same name,
-  /// and flushes the file.
+  /// Gives the spare HDF5 copy, just changed and flushed, the file's name (spare_copy.hpp).
+  void publish_h5() {
+    detail::exchange_names(detail::spare_path(target), target, where("flush"));
+    h5_spare = 1 - h5_spare;
+  }
+
+  void publish_xmf() {
+    detail::exchange_names(detail::spare_path(xdmf_target), xdmf_target, where("flush"));
+    xmf_spare = 1 - xmf_spare;
+  }
+
+  /// The writer thread's job for a root attribute: writes it to the spare, replacing one of the
+  /// same name, flushes, publishes the spare and does the same to the other copy.
   void write_root_attribute(const WriteAttribute& attribute) {
     const auto hdf5 = detail::hdf5_calls();
+    write_root_attribute(attribute, files[h5_spare]);
+    publish_h5();
+    write_root_attribute(attribute, files[h5_spare]);
+  }
+
+  void write_root_attribute(const WriteAttribute& attribute, hid_t file) {
     herr_t status = 0;
     if (const auto* number = std::get_if<double>(&attribute.value))
       status = detail::write_scalar_attribute(file, attribute.name, H5T_NATIVE_DOUBLE, number);
@@ -435,7 +476,7 @@ struct ResultsWriter::Impl {
     return properties;
   }
 
-  void create_dataset(Series& s) {
+  void create_dataset(Series& s, int c) {
     const std::vector<hsize_t> dims = s.dims(0);
     std::vector<hsize_t> max_dims = dims, chunk = s.dims(chunk_steps(s.values_per_step(), flush_every));
     max_dims[0] = H5S_UNLIMITED;
@@ -444,14 +485,15 @@ struct ResultsWriter::Impl {
     const Hid creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
     H5Pset_chunk(creation, rank, chunk.data());
     const Hid links(intermediate_groups(), H5Pclose);
-    s.dataset = H5Dcreate2(file, s.name.c_str(), s.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE, space, links, creation,
-                           H5P_DEFAULT);
-    check(s.dataset < 0 ? -1 : 0, "create dataset " + s.name, "ResultsWriter");
-    check(detail::describe_dataset(s.dataset, s.unit, s.description), "describe dataset " + s.name, "ResultsWriter");
+    hid_t& set = s.datasets[static_cast<std::size_t>(c)];
+    set = H5Dcreate2(files[c], s.name.c_str(), s.integer ? H5T_STD_I32LE : H5T_IEEE_F64LE, space, links, creation,
+                     H5P_DEFAULT);
+    check(set < 0 ? -1 : 0, "create dataset " + s.name, "ResultsWriter");
+    check(detail::describe_dataset(set, s.unit, s.description), "describe dataset " + s.name, "ResultsWriter");
   }
 
   /// An int dataset (`dims`) for the sidecar's topologies.
-  void write_ints(const std::string& name, const std::vector<int>& values, const std::vector<hsize_t>& dims,
+  void write_ints(hid_t file, const std::string& name, const std::vector<int>& values, const std::vector<hsize_t>& dims,
                   const std::string& description) {
     const Hid space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
     const Hid links(intermediate_groups(), H5Pclose);
@@ -462,7 +504,7 @@ struct ResultsWriter::Impl {
   }
 
   /// Point indices 0 … count−1 of each sidecar topology: one polyline per beam, the nodes.
-  void write_topologies() {
+  void write_topologies(hid_t file) {
     auto indices = [](int count) {
       std::vector<int> result(static_cast<std::size_t>(count));
       for (int i = 0; i < count; ++i) result[static_cast<std::size_t>(i)] = i;
@@ -470,7 +512,7 @@ struct ResultsWriter::Impl {
     };
     for (std::size_t k = 0; k < layout.centerline_points.size(); ++k) {
       const int p = layout.centerline_points[k];
-      write_ints("/xdmf/polyline" + std::to_string(k), indices(p), {1, static_cast<hsize_t>(p)},
+      write_ints(file, "/xdmf/polyline" + std::to_string(k), indices(p), {1, static_cast<hsize_t>(p)},
                  "point indices 0 ... P-1 of beam " + std::to_string(k) + "'s polyline in the XDMF sidecar");
     }
     const auto drawn = [&](RigidBodyShape::Kind kind) {
@@ -478,17 +520,18 @@ struct ResultsWriter::Impl {
                          [kind](const RigidBodyShape& shape) { return shape.kind == kind; });
     };
     if (drawn(RigidBodyShape::Kind::box))
-      write_ints("/xdmf/hexahedron", indices(8), {1, 8}, "vertex indices 0 ... 7 of a box's hexahedron in the XDMF sidecar");
+      write_ints(file, "/xdmf/hexahedron", indices(8), {1, 8}, "vertex indices 0 ... 7 of a box's hexahedron in the XDMF sidecar");
     if (drawn(RigidBodyShape::Kind::axes))
-      write_ints("/xdmf/axes", indices(6), {3, 2},
+      write_ints(file, "/xdmf/axes", indices(6), {3, 2},
                  "vertex indices of the axes' three segments (0 1, 2 3, 4 5: X, Y, Z) in the XDMF sidecar");
     if (layout.node_count > 0)
-      write_ints("/xdmf/polyvertex", indices(layout.node_count), {static_cast<hsize_t>(layout.node_count)},
+      write_ints(file, "/xdmf/polyvertex", indices(layout.node_count), {static_cast<hsize_t>(layout.node_count)},
                  "point indices 0 ... n-1 of the nodes' point cloud in the XDMF sidecar");
   }
 
-  /// Appends the steps of `b` to every dataset (writer thread, holding the HDF5 lock).
-  void write_block(const Block& b) {
+  /// Appends the steps of `b` to every dataset of copy `c` and flushes it (writer thread,
+  /// holding the HDF5 lock).
+  void write_block(const Block& b, int c) {
     const auto start = static_cast<hsize_t>(b.first);
     const auto count = static_cast<hsize_t>(b.count);
     for (std::size_t k = 0; k < series.size(); ++k) {
@@ -496,25 +539,34 @@ struct ResultsWriter::Impl {
       const std::vector<hsize_t> total = s.dims(start + count), rows = s.dims(count);
       std::vector<hsize_t> offset(total.size(), 0);
       offset[0] = start;
-      check(H5Dset_extent(s.dataset, total.data()), "extend dataset " + s.name, "flush");
-      const Hid file_space(H5Dget_space(s.dataset), H5Sclose);
+      const hid_t set = s.datasets[static_cast<std::size_t>(c)];
+      check(H5Dset_extent(set, total.data()), "extend dataset " + s.name, "flush");
+      const Hid file_space(H5Dget_space(set), H5Sclose);
       const Hid memory_space(H5Screate_simple(static_cast<int>(rows.size()), rows.data(), nullptr), H5Sclose);
       check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, offset.data(), nullptr, rows.data(), nullptr),
             "select the new rows of " + s.name, "flush");
-      check(H5Dwrite(s.dataset, H5T_NATIVE_DOUBLE, memory_space, file_space, H5P_DEFAULT, b.rows[k].data()),
+      check(H5Dwrite(set, H5T_NATIVE_DOUBLE, memory_space, file_space, H5P_DEFAULT, b.rows[k].data()),
             "write dataset " + s.name, "flush");
     }
+    check(H5Fflush(files[c], H5F_SCOPE_GLOBAL), "flush", "flush");
   }
 
-  /// The writer thread's job for one block: its rows, H5Fflush, then its steps in the sidecar
-  /// (series 0 holds their times), so both files are complete up to the block when it returns.
+  /// The writer thread's job for one block: its rows and its steps in the sidecar (series 0
+  /// holds their times) to the spares, the spares published (the HDF5 file first, so that the
+  /// sidecar never lists steps it does not hold), then the same to the new spares; both files
+  /// are complete up to the block when it returns, and a kill at any moment leaves them whole
+  /// (spare_copy.hpp).
   void write_and_flush(const Block& b) {
-    {
-      const auto hdf5 = detail::hdf5_calls();
-      write_block(b);
-      check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "flush");
+    for (int pass = 0; pass < 2; ++pass) {
+      {
+        const auto hdf5 = detail::hdf5_calls();
+        write_block(b, h5_spare);
+      }
+      sidecars[static_cast<std::size_t>(xmf_spare)]->append(b.first, b.rows[0], b.first + b.count);
+      if (pass > 0) continue;
+      publish_h5();
+      publish_xmf();
     }
-    sidecar->append(b.first, b.rows[0], b.first + b.count);
   }
 
   /// The writer thread: does the jobs queued, in order, until told to stop. After an error it
@@ -635,21 +687,27 @@ struct ResultsWriter::Impl {
     worker.join();
   }
 
-  /// Stops the writer thread, then closes every dataset, the file and the sidecar (those the
-  /// writer thread made); returns false if HDF5 reported a failure.
+  /// Stops the writer thread, then closes every dataset, both copies of the file and of the
+  /// sidecar (those the writer thread made) and removes the spares; returns false if HDF5
+  /// reported a failure.
   bool release() {
     stop_writer();
     closed = true;
-    sidecar.reset();
+    for (auto& sidecar : sidecars) sidecar.reset();
     const auto hdf5 = detail::hdf5_calls();
     bool ok = true;
     for (Series& s : series)
-      if (s.dataset >= 0) {
-        ok = H5Dclose(s.dataset) >= 0 && ok;
-        s.dataset = H5I_INVALID_HID;
-      }
-    if (file >= 0) ok = H5Fclose(file) >= 0 && ok;
-    file = H5I_INVALID_HID;
+      for (hid_t& set : s.datasets)
+        if (set >= 0) {
+          ok = H5Dclose(set) >= 0 && ok;
+          set = H5I_INVALID_HID;
+        }
+    for (hid_t& file : files) {
+      if (file >= 0) ok = H5Fclose(file) >= 0 && ok;
+      file = H5I_INVALID_HID;
+    }
+    ::unlink(detail::spare_path(target).c_str());
+    ::unlink(detail::spare_path(xdmf_target).c_str());
     if (!ok) detail::note_hdf5_failure();
     detail::release_written_file(std::exchange(claim, {}));
     return ok;
@@ -902,6 +960,8 @@ ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, i
   check_layout(layout, flush_every, "core::ResultsWriter(" + h5_path + ")");
   impl.path = h5_path;
   impl.xdmf_path = sidecar_path(h5_path);
+  impl.target = detail::write_target(h5_path);
+  impl.xdmf_target = detail::write_target(impl.xdmf_path);
   impl.layout = std::move(layout);
   impl.flush_every = flush_every;
   impl.plan_series();
@@ -909,8 +969,8 @@ ResultsWriter::ResultsWriter(const std::string& h5_path, ResultsLayout layout, i
   const std::string where = "core::ResultsWriter(" + h5_path + ")";
   impl.claim = detail::claim_written_file(h5_path, where);
   detail::XdmfSidecar::check_names(impl.xdmf_path, std::filesystem::path(h5_path).filename().string(), impl.layout);
-  check_writable(h5_path, 0666, "the results file", where);  // HDF5's own mode for the files it makes
-  check_writable(impl.xdmf_path, 0644, "the XDMF sidecar", where);
+  check_writable(h5_path, impl.target, 0666, "the results file", where);  // HDF5's own mode for the files it makes
+  check_writable(impl.xdmf_path, impl.xdmf_target, 0644, "the XDMF sidecar", where);
   impl.start_writer();
 }
 
@@ -957,18 +1017,23 @@ void ResultsWriter::write_constant(const std::string& name, const Eigen::MatrixX
   impl.check_constant(name, data);
   impl.wait_idle();
   const auto hdf5 = detail::hdf5_calls();
-  if (H5Lexists(impl.file, name.c_str(), H5P_DEFAULT) > 0)
+  if (H5Lexists(impl.files[0], name.c_str(), H5P_DEFAULT) > 0)
     throw Error("the file already holds an object named " + name, impl.where("write_constant"),
                 "write each constant once, under a name not used by the time histories (docs/output.md)");
-  const hsize_t dims[2] = {static_cast<hsize_t>(data.rows()), static_cast<hsize_t>(data.cols())};
-  const Hid space(H5Screate_simple(data.cols() == 1 ? 1 : 2, dims, nullptr), H5Sclose);
-  const Hid links(Impl::intermediate_groups(), H5Pclose);
-  const Hid set(H5Dcreate2(impl.file, name.c_str(), H5T_IEEE_F64LE, space, links, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row_major = data;
-  impl.check(set.valid() ? H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data()) : -1,
-             "write dataset " + name, "write_constant");
-  impl.check(detail::describe_dataset(set, unit, description), "describe dataset " + name, "write_constant");
-  impl.check(H5Fflush(impl.file, H5F_SCOPE_GLOBAL), "flush", "write_constant");
+  // To the spare, which is then published, then to the other copy (spare_copy.hpp).
+  for (int pass = 0; pass < 2; ++pass) {
+    const hid_t file = impl.files[static_cast<std::size_t>(impl.h5_spare)];
+    const hsize_t dims[2] = {static_cast<hsize_t>(data.rows()), static_cast<hsize_t>(data.cols())};
+    const Hid space(H5Screate_simple(data.cols() == 1 ? 1 : 2, dims, nullptr), H5Sclose);
+    const Hid links(Impl::intermediate_groups(), H5Pclose);
+    const Hid set(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, links, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+    impl.check(set.valid() ? H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, row_major.data()) : -1,
+               "write dataset " + name, "write_constant");
+    impl.check(detail::describe_dataset(set, unit, description), "describe dataset " + name, "write_constant");
+    impl.check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush", "write_constant");
+    if (pass == 0) impl.publish_h5();
+  }
 }
 
 void ResultsWriter::append(const ResultsStep& step) {

@@ -9,7 +9,8 @@
 /// The document is appended in place: the writer remembers where the closing tags begin and, at
 /// each flush, writes the new steps' grids followed by the closing tags there in one pwrite. A
 /// flush therefore costs O(steps since the last flush), whatever the length of the run, and the
-/// file is complete XML after every flush, with no temporary file beside it.
+/// file is complete XML after every flush. A kill can cut that write short, so ResultsWriter
+/// keeps two sidecars and writes only the one that is not the published file (spare_copy.hpp).
 
 #include <spar/core/results_writer.hpp>
 

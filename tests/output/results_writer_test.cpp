@@ -446,9 +446,9 @@ TEST_CASE("A moved-from ResultsWriter refuses every call with an error, not a cr
 }
 
 TEST_CASE("A second run replaces the files, and writes through a symbolic link", "[output]") {
-  // The writer removes an old regular file and makes a new one (fresh_file.hpp: ext4 would
-  // otherwise write a truncated file back at its close); a symbolic link stays a link, its
-  // target truncated and rewritten as before.
+  // The writer renames a new file over the old one (a kill leaves one or the other whole:
+  // spare_copy.hpp); a symbolic link stays a link, the file it points to replaced. The spare
+  // copies are gone once the writers are closed.
   const spar::test::ScratchFolder folder("rewrite");
   namespace fs = std::filesystem;
   const std::string path = folder.file("run.h5"), target = folder.file("target.h5");
@@ -470,6 +470,8 @@ TEST_CASE("A second run replaces the files, and writes through a symbolic link",
   check_round_trip(ReadOnlyFile(target), 2);
   const auto root = spar::test::XmlReader::parse(spar::test::read_text(folder.file("target.xmf")));
   CHECK(root.one("Domain").one("Grid").all("Grid").size() == 2);
+  for (const auto& entry : fs::directory_iterator(fs::path(path).parent_path()))
+    CHECK(entry.path().extension() != ".spare");
 }
 
 TEST_CASE("A file being written is refused to a second writer of the program until it is closed", "[output]") {

@@ -123,9 +123,10 @@ struct ResultsStep {
 /// any object without a lock.
 class ResultsWriter {
 public:
-  /// Checks `layout` and that both paths can be written, then has the writer thread create
-  /// (truncate) the HDF5 file and every dataset of `layout` with zero steps, and write an empty
-  /// sidecar; flush() waits for that. Steps are written in blocks of `flush_every` (≥ 1). Throws
+  /// Checks `layout` and that both paths can be written, then has the writer thread make the
+  /// HDF5 file with every dataset of `layout` with zero steps, and an empty sidecar, and put them
+  /// in the place of an earlier run's files (a kill at any moment leaves both files whole:
+  /// docs/output.md, "Surviving a kill"); flush() waits for that. Steps are written in blocks of `flush_every` (≥ 1). Throws
   /// spar::Error naming the path and the reason if the layout is invalid, a file cannot be
   /// opened for writing or another writer of this program (a ResultsWriter not yet closed, an
   /// Hdf5File) is writing it; a later failure of HDF5 making the file (a full disk) is rethrown
