@@ -112,7 +112,7 @@ inline constexpr double max_slenderness = 1e4;
 
 /// A spar::Error naming the options when a beam of length `length` (option `length_name`) with
 /// section sides `thin` (`thin_name`) ≤ `thick` (`thick_name`) is no slender beam: L/thick <
-/// min_slenderness or L/thin > `most` (max_slenderness, or an example's lower bound).
+/// min_slenderness or L/thin > `most` (max_slenderness, or an example's tighter bound).
 inline void require_slender_beam(double length, const std::string& length_name, double thin, const std::string& thin_name,
                                  double thick, const std::string& thick_name, double most = max_slenderness) {
   const std::string where = "options " + length_name + ", " + thin_name + (thick_name == thin_name ? "" : ", " + thick_name);
