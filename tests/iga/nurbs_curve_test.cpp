@@ -84,3 +84,21 @@ TEST_CASE("invalid curves raise spar::Error naming the problem", "[iga]") {
   CHECK_THROWS_WITH(curve.point(1.5), Contains("outside the knot range"));
   CHECK_THROWS_WITH(curve.derivatives(0.5, max_derivative_order + 1), Contains("order 8"));
 }
+
+TEST_CASE("a weight lost to round-off beside the largest is refused; scaled and arc weights pass", "[iga]") {
+  // Issue 29: a weight of 1e-300 beside 1 was accepted (its derivatives overflowed only later).
+  const KnotVector U = KnotVector::open_uniform(2, 2, 1);
+  const NurbsCurve<3>::Points P = NurbsCurve<3>::Points::Random(3, 4);
+  for (const double tiny : {1e-300, 1e-17, 1e-16})
+    CHECK_THROWS_WITH(NurbsCurve<3>(U, P, Eigen::Vector4d(1, tiny, 1, 1)),
+                      Contains("weight 1 = ") && Contains("below machine epsilon times the largest weight"));
+  CHECK_THROWS_WITH(NurbsCurve<3>(U, P, Eigen::Vector4d(1e300, 1, 1, 1)), Contains("largest weight"));
+  // At the bound and above, and any common scale (the curve does not change under w -> c w).
+  CHECK_NOTHROW(NurbsCurve<3>(U, P, Eigen::Vector4d(1, 1e-15, 1, 1)));
+  CHECK_NOTHROW(NurbsCurve<3>(U, P, Eigen::Vector4d(1e-300, 2e-300, 1e-300, 1e-300)));
+  CHECK_NOTHROW(NurbsCurve<3>(U, P, Eigen::Vector4d(1e300, 2e300, 1e300, 1e300)));
+  const NurbsCurve<3> scaled(U, P, 1e-200 * Eigen::Vector4d(1, 0.5, 2, 1));
+  const NurbsCurve<3> unscaled(U, P, Eigen::Vector4d(1, 0.5, 2, 1));
+  for (const double u : {0.0, 0.3, 0.5, 0.8, 1.0})
+    CHECK((scaled.derivatives(u, 2) - unscaled.derivatives(u, 2)).norm() <= 1e-13 * unscaled.derivatives(u, 2).norm());
+}

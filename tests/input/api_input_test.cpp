@@ -206,11 +206,19 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
        "degree -2147483648 is outside 1"},
       {"a knot span of 5e-324 (refined to a curve 13 % away)",
        [] { iga::KnotVector({0, 0, 0, 0, 4.9406564584124654e-324, 0.5, 1, 1, 1, 1}, 3); }, "differ by less than"},
-      {"curve derivatives that overflow (a weight of 5e-324 next to 1)",
+      {"a weight of 5e-324 next to 1 (its derivatives overflowed; refused since issue 29)",
        [] {
          const iga::KnotVector U = iga::KnotVector::open_uniform(1, 2, 1);
          Eigen::Matrix3Xd points = Eigen::Matrix3Xd::Ones(3, 3);
-         iga::NurbsCurve<3>(U, points, Eigen::Vector3d(4.9406564584124654e-324, 1, 1)).derivatives(0.0, 2);
+         iga::NurbsCurve<3>(U, points, Eigen::Vector3d(4.9406564584124654e-324, 1, 1));
+       },
+       "below machine epsilon times the largest weight"},
+      {"curve derivatives that overflow (control points of ±1e308)",
+       [] {
+         const iga::KnotVector U = iga::KnotVector::open_uniform(1, 2, 1);
+         Eigen::Matrix3Xd points = Eigen::Matrix3Xd::Ones(3, 3);
+         points.col(1) *= -1;
+         iga::NurbsCurve<3>(U, 1e308 * points).derivatives(0.0, 2);
        },
        "overflow at u = 0"},
       {"a body whose gravity potential overflows (1e300 kg at z = -1e300 m)",

@@ -36,7 +36,8 @@ public:
       Eigen::Matrix<double, Dim, Eigen::Dynamic, Eigen::ColMajor, Dim, max_derivative_order + 1>;
 
   /// Validates that there is one control point and one weight per basis function and that every
-  /// weight is finite and > 0; throws spar::Error otherwise.
+  /// weight is finite, > 0 and at least machine epsilon times the largest; throws spar::Error
+  /// otherwise.
   NurbsCurve(KnotVector knots, Points control_points, Eigen::VectorXd weights)
       : knots_(std::move(knots)),
         control_points_(std::move(control_points)),
@@ -57,6 +58,20 @@ public:
         throw Error("weight " + std::to_string(i) + " = " + detail::number(weights_(i)) +
                         " is not a finite number > 0 (weight ≤ 0)",
                     where, "give finite positive weights");
+    // A weight below ε·max_j w_j (ε = 2.2e-16, machine epsilon) is lost to round-off in
+    // W = Σ w_j N_j wherever a basis function of the largest weight is active: its control point
+    // cannot be felt, the curve passes it within a parameter interval narrower than the doubles
+    // resolve, and its derivatives overflow (a weight of 1e-300 beside 1, issue 29). The bound is
+    // relative because the curve is unchanged when all weights are scaled alike; every curve of
+    // meaning is far inside it (arcs: cos(Δθ/2) ≥ 0.7 of 1; refinement and elevation stay within
+    // the range of the weights they start from).
+    const double largest = weights_.maxCoeff();
+    for (int i = 0; i < n; ++i)
+      if (weights_(i) < std::numeric_limits<double>::epsilon() * largest)
+        throw Error("weight " + std::to_string(i) + " = " + detail::number(weights_(i)) +
+                        " is below machine epsilon times the largest weight (" + detail::number(largest) +
+                        "): its control point is lost to round-off",
+                    where, "give weights within a factor 4.5e15 of each other (scaling them all alike leaves the curve unchanged)");
     if (!control_points_.allFinite())
       throw Error("a control point has a NaN or infinite coordinate", where,
                   "give finite control points");
