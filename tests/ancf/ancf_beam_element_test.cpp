@@ -252,3 +252,30 @@ TEST_CASE("ANCF element input errors", "[ancf][element]") {
   CHECK_THROWS_AS(core::AncfBeam24Element({beam.nodes[0], beam.nodes[1]}, tables, bent, 0), Error);
   CHECK_THROWS_AS(core::add_ancf_nodal_force(model, 99, Eigen::Vector3d::UnitZ()), Error);
 }
+
+TEST_CASE("ANCF beams of short elements far from the origin build (issue 29)", "[ancf][element]") {
+  // Each element compares its nodes' distance with the tables' length. That distance is a
+  // difference of two positions, each rounded to its own magnitude: 1e4 m from the origin a
+  // 5 cm element's length is known only to ~2e-12 m, and a test of 1e-12 of the length alone
+  // (5e-14 m) refused the beam; so did ancf_cantilever from ~10⁴ elements of its 1 m beam.
+  for (const double distance : {0.0, 1e4}) {
+    core::Model model;
+    const Eigen::Vector3d start(distance, 0, 0);
+    const core::AncfBeam beam = core::add_ancf_beam(
+        model, {.start = start, .end = start + Eigen::Vector3d(1, 0, 0), .elements = 20, .material = material,
+                .section = core::SectionIntegrals::circle(0.01)});
+    CHECK(beam.elements.size() == 20);
+  }
+  core::Model model;
+  const core::AncfBeam fine = core::add_ancf_beam(
+      model, {.elements = 20000, .material = material, .section = core::SectionIntegrals::circle(0.01)});
+  CHECK(fine.element_length == Approx(5e-5).epsilon(1e-12));
+  // A length that is truly another is still refused: 1e-9 of a 1 m element.
+  core::Model one;
+  const core::AncfBeam beam = core::add_ancf_beam(one, {.material = material, .section = core::SectionIntegrals::circle(0.01)});
+  core::Configuration stretched = one.state();
+  stretched.vector(beam.nodes[1]).head<3>() += Eigen::Vector3d(1e-9, 0, 0);
+  const auto tables = std::make_shared<const core::AncfElementTables<2>>(1.0, material, core::SectionIntegrals::circle(0.01));
+  CHECK_THROWS_WITH(core::AncfBeam24Element({beam.nodes[0], beam.nodes[1]}, tables, stretched, 0),
+                    Catch::Contains("apart"));
+}

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <limits>
 #include <span>
 #include <utility>
 
@@ -322,11 +323,18 @@ AncfBeamElement<transverse>::AncfBeamElement(std::vector<int> blocks, std::share
                   where, "nodes are vector blocks (r, r_x, r_y, r_z); the extra block has 6 entries");
   }
   // The reference configuration must be strain free: F₀ = [a g h] orthogonal, b = c = 0.
+  // The nodes' distance is a difference of two positions, each rounded to its own magnitude, so
+  // it is known to 1e-12 of the length only up to ε (|r_A| + |r_B|): a 5e-5 m element of a 1 m
+  // beam, or a 5 cm one 1e4 m from the origin, has a length known to ~1e-16 or ~2e-12 m, below
+  // 1e-12 of it (issue 29: ancf_cantilever refused its own beam from ~10⁴ elements).
   const Vector e0 = coordinates(q0);
-  const double l = (e0.template segment<3>(12) - e0.template head<3>()).norm();
-  if (std::fabs(l - tables_->length) > 1e-12 * tables_->length)
-    throw Error("the nodes are " + std::to_string(l) + " apart, the tables' length is " +
-                    std::to_string(tables_->length), where, "build the tables for this element's length");
+  const Eigen::Vector3d r_A = e0.template head<3>(), r_B = e0.template segment<3>(12);
+  const double l = (r_B - r_A).norm();
+  const double roundoff = std::numeric_limits<double>::epsilon() * (r_A.norm() + r_B.norm());
+  if (std::fabs(l - tables_->length) > 1e-12 * tables_->length + roundoff)
+    throw Error("the nodes are " + significant(l) + " apart, the tables' length is " + significant(tables_->length) +
+                    " (they differ by " + significant(l - tables_->length) + ")",
+                where, "build the tables for this element's length");
   for (int g = 0; g < Tables::points; ++g) {
     Eigen::Matrix<double, 15, 1> u;
     Eigen::Map<Eigen::Matrix<double, 3, 5>>(u.data()) =
