@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace spar::core {
@@ -38,6 +39,34 @@ std::vector<Eigen::Matrix3d> frames_from_tangent(const iga::NurbsCurve<3>& curve
   return frames;
 }
 
+/// Refuses a control polygon with two coincident consecutive points or one that folds straight
+/// back on itself (the legs to and from a point antiparallel): the centerline's tangent vanishes
+/// there, or reverses — a cusp, or inside a C⁰ knot a hairpin of two elements on top of each
+/// other — and the reference frames from the tangent turn by π (issue 29). The centerline's
+/// derivative is Σ_k S_k (P_{k+1} − P_k) with S_k ≥ 0 (the tail sums of a totally positive basis
+/// are non-decreasing), so these are where C′ can vanish in a quadratic. "Coincident" and
+/// "antiparallel" are within the round-off of the points' coordinates, 4u·|P|∞ per leg.
+void check_control_polygon(const iga::NurbsCurve<3>& curve) {
+  const auto& P = curve.control_points();
+  constexpr double roundoff = 2 * std::numeric_limits<double>::epsilon();
+  const auto size = [&](Eigen::Index i) { return P.col(i).cwiseAbs().maxCoeff(); };
+  for (Eigen::Index i = 0; i + 1 < P.cols(); ++i) {
+    const Eigen::Vector3d leg = P.col(i + 1) - P.col(i);
+    if (leg.norm() <= roundoff * std::max(size(i), size(i + 1)))
+      throw Error("control points " + std::to_string(i) + " and " + std::to_string(i + 1) +
+                      " coincide: the centerline's tangent vanishes between them",
+                  where, "remove one of the two (a corner is made by repeating a knot, not a control point)");
+    if (i + 2 == P.cols()) break;
+    const Eigen::Vector3d next = P.col(i + 2) - P.col(i + 1);
+    const double scale = std::max({size(i), size(i + 1), size(i + 2)});
+    if (leg.dot(next) < 0.0 && leg.cross(next).norm() <= roundoff * scale * (leg.norm() + next.norm()))
+      throw Error("the control polygon folds back on itself at control point " + std::to_string(i + 1) +
+                      ": the legs to and from it point in opposite directions, so the centerline's tangent "
+                      "reverses there",
+                  where, "give a centerline that does not turn back on itself");
+  }
+}
+
 }  // namespace
 
 GeometricallyExactBeam::GeometricallyExactBeam(const BeamParameters& parameters,
@@ -63,6 +92,7 @@ GeometricallyExactBeam::GeometricallyExactBeam(const BeamParameters& parameters,
   // The elements first: their refusals (a Gauss rule too large, a centerline of zero speed) must
   // leave the configuration without the beam's nodes.
   build_elements(parameters.quadrature_points);
+  check_control_polygon(centerline_);
   first_node_ = configuration.block_count();
   for (int I = 0; I < control_point_count_; ++I)
     configuration.add_frame(centerline_.control_points().col(I), frames[I]);
