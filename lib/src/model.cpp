@@ -177,9 +177,14 @@ void Model::fix(int block, Fix what) {
                 "fix a vector block with Fix::all");
   const int first = (what == Fix::rotations) ? 3 : 0;
   const int last = (what == Fix::translations) ? 3 : b.size;
-  for (int i = first; i < last; ++i) fixed_dofs_.push_back(b.offset + i);
-  std::sort(fixed_dofs_.begin(), fixed_dofs_.end());
-  fixed_dofs_.erase(std::unique(fixed_dofs_.begin(), fixed_dofs_.end()), fixed_dofs_.end());
+  // Kept sorted by inserting each dof in place (at the end when blocks are fixed in order): a sort
+  // of the whole list per call made fixing a member's nodes one by one quadratic, 11 % of a
+  // 2000-element truss run (issue 29).
+  for (int i = first; i < last; ++i) {
+    const int dof = b.offset + i;
+    const auto at = std::lower_bound(fixed_dofs_.begin(), fixed_dofs_.end(), dof);
+    if (at == fixed_dofs_.end() || *at != dof) fixed_dofs_.insert(at, dof);
+  }
 }
 
 void Model::replace_state(Configuration state) {
