@@ -125,8 +125,9 @@ TEST_CASE("truss model with 400 elements per member: built, assembled and steppe
   // Issue 29: each sliding joint's carrier length (NurbsCurve::arc_length) never returned with 400
   // elements per member (200 took 23 s), members metres from the origin with elements of 1 cm:
   // the quadrature's test could not be met through the round-off of |C'|. 11 200 beam elements,
-  // ~70 000 dofs; measured 3.7 s for `truss_deployment --case 1 --h 0.005 --elements 400
-  // --t-end 0.01` (two steps), 1.8 s with 200 and 7.0 s with 800: linear in the size.
+  // ~70 000 dofs; measured 2.7-3.3 s for `truss_deployment --case 1 --h 0.005 --elements 400
+  // --t-end 0.01 --output-interval 0.01` (two steps; 2 cores at load 3), 1.5 s with 200, 5.8 s
+  // with 800, 15.8 s with 2000: linear in the size, half of it KLU's factorizations.
   Run run;
   build(run, "", 0.0, 0.005, 400);
   for (const auto& slider : run.unit.sliders)
