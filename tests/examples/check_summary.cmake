@@ -1,6 +1,6 @@
 # Script mode: run EXAMPLE with ARGS and --out OUT, read the JSON object on its last stdout line,
 # and check each BOUNDS entry "key<value" or "key>value" (numbers compared by CMake's LESS and
-# GREATER). Each of FILES (names in OUT) must then exist and not be empty, and with XMLLINT every
+# GREATER). Each of FILES (names in OUT) must then exist and not be empty, and (xmllint, XMLLINT) every
 # XDMF sidecar in OUT must be well-formed XML. A failed bound or check fails the test, with the
 # summary shown.
 file(REMOVE_RECURSE ${OUT})
@@ -36,7 +36,10 @@ foreach(name IN LISTS FILES)
   endif()
 endforeach()
 file(GLOB sidecars ${OUT}/*.xmf ${OUT}/*.xdmf)
-if(sidecars AND XMLLINT)
+if(sidecars AND NOT XMLLINT)
+  message(FATAL_ERROR "xmllint not found, so the XDMF sidecars cannot be checked: install libxml2-utils "
+                      "(scripts/setup.sh --test)")
+elseif(sidecars)
   execute_process(COMMAND ${XMLLINT} --noout ${sidecars} RESULT_VARIABLE status ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "an XDMF sidecar is not well-formed XML (xmllint):\n${err}")
