@@ -47,18 +47,13 @@ int Model::add_element(std::unique_ptr<Element> element) {
 }
 
 const Element& Model::element(int i) const {
-  if (i < 0 || i >= element_count())
-    throw Error("element " + std::to_string(i) + " does not exist (the model has " +
-                    std::to_string(element_count()) + " elements)",
-                "core::Model::element", "use an index below element_count()");
+  check_element_index(i, "core::Model::element");
   return *elements_[i];
 }
 
 void Model::replace_element(int i, std::unique_ptr<Element> element) {
   const char* where = "core::Model::replace_element";
-  if (i < 0 || i >= element_count())
-    throw Error("element " + std::to_string(i) + " does not exist", where,
-                "use an index returned by add_element");
+  check_element_index(i, where);
   if (!element) throw Error("null element", where, "pass an element object");
   for (const int b : element->blocks()) check_block(b, where);
   elements_[i] = std::move(element);
@@ -66,9 +61,7 @@ void Model::replace_element(int i, std::unique_ptr<Element> element) {
 }
 
 void Model::remove_element(int i) {
-  if (i < 0 || i >= element_count())
-    throw Error("element " + std::to_string(i) + " does not exist", "core::Model::remove_element",
-                "use an index returned by add_element");
+  check_element_index(i, "core::Model::remove_element");
   elements_.erase(elements_.begin() + i);
   ++structure_version_;
 }
@@ -88,6 +81,13 @@ const GeometricallyExactBeam& Model::beam(int b) const {
                     std::to_string(beam_count()) + ")",
                 "core::Model::beam", "use an index returned by add_beam");
   return *beams_[b];
+}
+
+void Model::check_element_index(int i, const char* where) const {
+  if (i < 0 || i >= element_count())
+    throw Error("element " + std::to_string(i) + " does not exist (the model has " +
+                    std::to_string(element_count()) + " elements)",
+                where, "use an index below element_count(), as add_element returns them");
 }
 
 void Model::check_block(int block, const char* where) const {

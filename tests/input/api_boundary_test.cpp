@@ -11,6 +11,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "cantilever.hpp"
+
 #include <functional>
 #include <limits>
 #include <string>
@@ -23,20 +25,7 @@ namespace {
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
 /// A steel cantilever of 8 cubic elements along +X, clamped at the root, with inertia.
-struct Cantilever {
-  core::Model model;
-  int beam = 0, root = 0, tip = 0;
-  Cantilever() {
-    const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
-    const core::CrossSection section = core::CrossSection::rectangle(0.01, 0.01, 0.3);
-    beam = model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 8, 3),
-                           .stiffness = core::SectionStiffness::from(steel, section),
-                           .inertia = core::SectionInertia::from(steel, section)});
-    root = model.beam(beam).node(0);
-    tip = model.beam(beam).node(model.beam(beam).control_point_count() - 1);
-    model.fix(root);
-  }
-};
+test::Cantilever steel_cantilever() { return test::make_steel_cantilever(8); }
 
 /// An aluminium ANCF beam of 2 elements.
 core::AncfBeamParameters ancf_parameters() {
@@ -48,7 +37,7 @@ core::AncfBeamParameters ancf_parameters() {
 /// Evaluates the cantilever's first element dynamically, at zero velocity and acceleration
 /// except for what `change` writes into them.
 void evaluate_dynamic(const std::function<void(Eigen::VectorXd& v, Eigen::VectorXd& a)>& change) {
-  Cantilever c;
+  test::Cantilever c = steel_cantilever();
   Eigen::VectorXd v = Eigen::VectorXd::Zero(c.model.dof_count()), a = v;
   change(v, a);
   const core::Element& element = c.model.element(0);
@@ -71,22 +60,22 @@ TEST_CASE("every bad API input of issue 29's audit ends in a spar::Error naming 
   const std::vector<Case> cases = {
       {"Model::element(99) of an 8-element model, then evaluate (SIGSEGV)",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          core::ElementOutput out;
          c.model.element(99).evaluate({.q = &c.model.state()}, {}, out);
        },
        "element 99 does not exist (the model has 8 elements)"},
-      {"Model::element(-1) (SIGSEGV)", [] { Cantilever c; c.model.element(-1).name(); }, "element -1 does not exist"},
+      {"Model::element(-1) (SIGSEGV)", [] { test::Cantilever c = steel_cantilever(); c.model.element(-1).name(); }, "element -1 does not exist"},
       {"Element::evaluate into a default ElementOutput (SIGSEGV)",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          core::ElementOutput out;
          c.model.element(0).evaluate({.q = &c.model.state()}, {.stiffness = true}, out);
        },
        "the output holds a residual of 0 entries for the element's 24 dofs"},
       {"Element::evaluate into an output without the requested stiffness",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          core::ElementOutput out;
          out.reset(24, {});
          c.model.element(0).evaluate({.q = &c.model.state()}, {.stiffness = true}, out);
@@ -100,28 +89,28 @@ TEST_CASE("every bad API input of issue 29's audit ends in a spar::Error naming 
        "the acceleration has a non-finite entry (inf) at dof 9"},
       {"Model::replace_state with an empty state, then solve_static (SIGSEGV)",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          c.model.replace_state(core::Configuration{});
          solvers::solve_static(c.model);
        },
        "acts on block 0, which the configuration (0 blocks) does not have"},
       {"Model::replace_state with an empty state, then a GeneralizedAlpha",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          c.model.replace_state(core::Configuration{});
          solvers::GeneralizedAlpha(c.model, {}, {});
        },
        "solvers::GeneralizedAlpha: element 0 (beam 0, element 0) acts on block 0"},
       {"R = 2I written into model.state(), then solve_static (solved)",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          c.model.state().rotation[c.tip] = 2.0 * Eigen::Matrix3d::Identity();
          solvers::solve_static(c.model);
        },
        "the rotation of block 10 is not a rotation: |R^T R - I| = 5.19615"},
       {"a reflection written into model.state() during a run, then a step",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          solvers::GeneralizedAlpha integrator(c.model, {}, {});
          integrator.step();
          c.model.state().rotation[c.tip] = Eigen::Vector3d(1, 1, -1).asDiagonal();
@@ -130,7 +119,7 @@ TEST_CASE("every bad API input of issue 29's audit ends in a spar::Error naming 
        "GeneralizedAlpha::step: the rotation of block 10 is a reflection (det R = -1)"},
       {"a NaN position written into model.state(), then initialize",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          solvers::GeneralizedAlpha integrator(c.model, {}, {});
          c.model.state().position[c.tip].y() = not_a_number;
          integrator.initialize();
@@ -171,7 +160,7 @@ TEST_CASE("every bad API input of issue 29's audit ends in a spar::Error naming 
        "the section has an area of 0"},
       {"a NaN load history in statics (ignored)",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
                           [](double) { return not_a_number; });
          solvers::solve_static(c.model);
@@ -207,7 +196,7 @@ TEST_CASE("a static load too large for the model is refused in its words, the st
   // entry" and left the tip near 1e291 m (the increment applied outside the solver's restore).
   for (const double force : {1e200, 1e250, 1e300}) {
     INFO("tip force " << force << " N");
-    Cantilever c;
+    test::Cantilever c = steel_cantilever();
     c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, force, 0)});
     const core::Configuration initial = c.model.state();
     try {
@@ -227,7 +216,7 @@ TEST_CASE("a static load too large for the model is refused in its words, the st
 TEST_CASE("a NaN load history in statics stops the solve at once, the state restored", "[input]") {
   // The dynamic path refuses it at its first evaluation (api_input_test.cpp); statics scales
   // the load by the load factor alone and never looked at the history.
-  Cantilever c;
+  test::Cantilever c = steel_cantilever();
   c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
                    [](double t) { return t == 0.0 ? not_a_number : 1.0; });
   const core::Configuration initial = c.model.state();
@@ -246,7 +235,7 @@ TEST_CASE("a static solve accepts the round-off its own rotation updates leave",
   // a thousand times the drift of 10^7 updates R exp(dphi) of 0.01 rad (9e-13, measured; it grows
   // as the square root of the count). R (1 + e) has |R^T R - I| = 2 sqrt(3) e to first order.
   const auto solve_with_scaled_tip = [](double e) {
-    Cantilever c;
+    test::Cantilever c = steel_cantilever();
     c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)});
     c.model.state().rotation[c.tip] *= 1.0 + e;
     solvers::solve_static(c.model);
@@ -260,7 +249,7 @@ TEST_CASE("GeneralizedAlpha: step() before initialize() initializes; a second in
   // step() without initialize() is the documented start (twenty test files and the examples'
   // runs rely on it): it must be the same run, bit for bit, as initialize() then step().
   const auto tip_after_steps = [](bool initialize_first) {
-    Cantilever c;
+    test::Cantilever c = steel_cantilever();
     c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)});
     solvers::GeneralizedAlpha integrator(c.model, {}, {.time_step = 1e-3});
     if (initialize_first) integrator.initialize();
@@ -271,7 +260,7 @@ TEST_CASE("GeneralizedAlpha: step() before initialize() initializes; a second in
 
   // A second initialize() with no step or remap since the first restarted the method at the
   // same state, silently dropping DynamicOptions::perturbed_starting_values (a = v̇ again).
-  Cantilever c;
+  test::Cantilever c = steel_cantilever();
   solvers::GeneralizedAlpha integrator(c.model, {}, {.time_step = 1e-3, .perturbed_starting_values = true});
   integrator.initialize();
   CHECK_THROWS_WITH(integrator.initialize(),

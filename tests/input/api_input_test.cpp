@@ -11,6 +11,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "cantilever.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -27,20 +29,7 @@ constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 constexpr double infinite = std::numeric_limits<double>::infinity();
 
 /// A steel cantilever of 4 cubic elements along +X, clamped at the root, with inertia.
-struct Cantilever {
-  core::Model model;
-  int beam = 0, root = 0, tip = 0;
-  Cantilever() {
-    const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
-    const core::CrossSection section = core::CrossSection::rectangle(0.01, 0.01, 0.3);
-    beam = model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 4, 3),
-                           .stiffness = core::SectionStiffness::from(steel, section),
-                           .inertia = core::SectionInertia::from(steel, section)});
-    root = model.beam(beam).node(0);
-    tip = model.beam(beam).node(model.beam(beam).control_point_count() - 1);
-    model.fix(root);
-  }
-};
+test::Cantilever steel_cantilever() { return test::make_steel_cantilever(4); }
 
 core::RigidBodyParameters top() {
   return {.center_of_mass = Eigen::Vector3d(0, 1, 0), .mass = 15.0,
@@ -50,7 +39,7 @@ core::RigidBodyParameters top() {
 /// Evaluates the cantilever's first element (a beam element) at the input `change` makes of a
 /// good static one: Element::evaluate checks its input at this boundary.
 void evaluate_element(const std::function<void(core::ElementInput&)>& change) {
-  Cantilever c;
+  test::Cantilever c = steel_cantilever();
   core::ElementInput in{.q = &c.model.state(), .gravity = Eigen::Vector3d(0, 0, -9.81)};
   change(in);
   const core::Element& element = c.model.element(0);
@@ -61,7 +50,7 @@ void evaluate_element(const std::function<void(core::ElementInput&)>& change) {
 
 /// A few dynamic steps of the cantilever under `options` with a tip force of the given history.
 void run_dynamics(const solvers::DynamicOptions& options, core::LoadHistory history = {}) {
-  Cantilever c;
+  test::Cantilever c = steel_cantilever();
   c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)}, std::move(history));
   solvers::GeneralizedAlpha integrator(c.model, {}, options);
   integrator.initialize();
@@ -79,13 +68,13 @@ struct Case {
 TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[input]") {
   const std::vector<Case> cases = {
       {"position_at with an empty configuration (SIGSEGV)",
-       [] { Cantilever c; c.model.beam(c.beam).position_at(core::Configuration{}, 0.5); }, "frame nodes"},
+       [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).position_at(core::Configuration{}, 0.5); }, "frame nodes"},
       {"rotation_at with an empty configuration",
-       [] { Cantilever c; c.model.beam(c.beam).rotation_at(core::Configuration{}, 0.5); }, "frame nodes"},
+       [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).rotation_at(core::Configuration{}, 0.5); }, "frame nodes"},
       {"sample_centerline with an empty configuration",
-       [] { Cantilever c; c.model.beam(c.beam).sample_centerline(core::Configuration{}, 3); }, "frame nodes"},
+       [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).sample_centerline(core::Configuration{}, 3); }, "frame nodes"},
       {"beam element 99 (read out of bounds)",
-       [] { Cantilever c; c.model.beam(c.beam).element(99); }, "element 99 does not exist"},
+       [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).element(99); }, "element 99 does not exist"},
       {"100 000 Gauss points (hung)",
        [] {
          core::Model model;
@@ -110,17 +99,17 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
        [] { core::Model m; auto p = top(); p.inertia = Eigen::Vector3d(1, 1, -1e-9).asDiagonal(); m.add_rigid_body(p); },
        "positive definite"},
       {"attach_at a NaN point",
-       [] { Cantilever c; joints::attach_at(c.tip, Eigen::Vector3d(not_a_number, 0, 0), c.model.state()); }, "attachment point"},
+       [] { test::Cantilever c = steel_cantilever(); joints::attach_at(c.tip, Eigen::Vector3d(not_a_number, 0, 0), c.model.state()); }, "attachment point"},
       {"a NaN joint offset",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          joints::SphericalJoint(joints::Attachment{.node = c.tip, .offset = Eigen::Vector3d(0, not_a_number, 0)},
                                 joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, c.model.state());
        },
        "offset of attachment a"},
       {"a NaN prismatic line point",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          joints::PrismaticJoint(joints::Attachment{.node = c.tip, .offset = Eigen::Vector3d::Zero()},
                                 Eigen::Vector3d(not_a_number, 0, 0), Eigen::Vector3d::UnitX(), false, c.model.state());
        },
@@ -129,20 +118,20 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
        "Poisson"},
       {"Poisson's ratio NaN in CrossSection::circle", [] { core::CrossSection::circle(0.01, not_a_number); }, "Poisson"},
       {"a NaN force in add_load",
-       [] { Cantilever c; c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(not_a_number, 0, 0)}); },
+       [] { test::Cantilever c = steel_cantilever(); c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(not_a_number, 0, 0)}); },
        "force"},
       {"a NaN follower moment",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          c.model.add_load(core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, not_a_number),
                                             .frame = core::MomentFrame::material});
        },
        "moment"},
       {"set_gravity(NaN)", [] { core::Model m; m.set_gravity(Eigen::Vector3d(0, 0, not_a_number)); }, "gravity"},
-      {"static residual_tolerance = -1", [] { Cantilever c; solvers::solve_static(c.model, {.residual_tolerance = -1}); },
+      {"static residual_tolerance = -1", [] { test::Cantilever c = steel_cantilever(); solvers::solve_static(c.model, {.residual_tolerance = -1}); },
        "tolerance"},
       {"static increment_tolerance = NaN",
-       [] { Cantilever c; solvers::solve_static(c.model, {.increment_tolerance = not_a_number}); }, "tolerance"},
+       [] { test::Cantilever c = steel_cantilever(); solvers::solve_static(c.model, {.increment_tolerance = not_a_number}); }, "tolerance"},
       {"dynamic tolerance = NaN", [] { run_dynamics({.tolerance = not_a_number}); }, "tolerance must be positive"},
       {"dynamic residual_tolerance = -1", [] { run_dynamics({.residual_tolerance = -1}); }, "residual_tolerance = -1"},
       {"dynamic residual_tolerance = NaN", [] { run_dynamics({.residual_tolerance = not_a_number}); }, "residual_tolerance = nan"},
@@ -155,7 +144,7 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
        "the load history gives nan at t = 0.002"},
       {"set_velocity(NaN)",
        [] {
-         Cantilever c;
+         test::Cantilever c = steel_cantilever();
          solvers::GeneralizedAlpha integrator(c.model, {}, {});
          integrator.set_velocity(c.tip, Eigen::Vector3d(not_a_number, 0, 0), Eigen::Vector3d::Zero());
        },
@@ -291,7 +280,7 @@ TEST_CASE("ResultsWriter refuses a NaN scalar unless it is declared may_be_undef
 TEST_CASE("a NaN load history stops the run at its first evaluation, without cut-backs", "[input]") {
   // Before: the history's error was taken for a Newton failure, the step was halved 8 times and
   // the final message advised reducing the time step.
-  Cantilever c;
+  test::Cantilever c = steel_cantilever();
   c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
                    [](double t) { return t > 0.0015 ? not_a_number : 1.0; });
   solvers::GeneralizedAlpha integrator(c.model, {}, {});

@@ -34,4 +34,20 @@ inline Cantilever make_cantilever(int elements, int degree, double length = 1.0)
   return c;
 }
 
+/// A steel cantilever of `elements` cubic elements along +X, 1 m long, of a 1 cm square section,
+/// with inertia, clamped at the root: the model of the API boundary tests.
+inline Cantilever make_steel_cantilever(int elements) {
+  const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
+  const core::CrossSection section = core::CrossSection::rectangle(0.01, 0.01, 0.3);
+  Cantilever c;
+  c.beam = c.model.add_beam({.centerline = straight_centerline(1.0, elements, 3),
+                             .stiffness = core::SectionStiffness::from(steel, section),
+                             .inertia = core::SectionInertia::from(steel, section)});
+  const core::GeometricallyExactBeam& beam = c.model.beam(c.beam);
+  c.root = beam.node(0);
+  c.tip = beam.node(beam.control_point_count() - 1);
+  c.model.fix(c.root);
+  return c;
+}
+
 }  // namespace spar::test

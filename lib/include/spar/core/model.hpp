@@ -124,6 +124,7 @@ public:
 
 private:
   void check_block(int block, const char* where) const;
+  void check_element_index(int i, const char* where) const;
   void check_frame(int block, const char* where) const;
 
   Configuration state_;
