@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include "cantilever.hpp"
+#include "error_cases.hpp"
 
 #include <functional>
 #include <limits>
@@ -48,16 +49,10 @@ void evaluate_dynamic(const std::function<void(Eigen::VectorXd& v, Eigen::Vector
   element.evaluate(in, request, out);
 }
 
-struct Case {
-  std::string name;
-  std::function<void()> call;
-  std::string word;
-};
-
 }  // namespace
 
 TEST_CASE("every bad API input of issue 29's audit ends in a spar::Error naming it", "[input]") {
-  const std::vector<Case> cases = {
+  const std::vector<test::ErrorCase> cases = {
       {"Model::element(99) of an 8-element model, then evaluate (SIGSEGV)",
        [] {
          test::Cantilever c = steel_cantilever();
@@ -167,16 +162,7 @@ TEST_CASE("every bad API input of issue 29's audit ends in a spar::Error naming 
        },
        "the load history gives nan at t = 0"},
   };
-  for (const Case& c : cases) {
-    INFO(c.name);
-    std::string message;
-    try {
-      c.call();
-    } catch (const Error& error) {
-      message = error.what();
-    }
-    CHECK_THAT(message, Catch::Contains(c.word));
-  }
+  test::check_error_cases(cases);
 }
 
 TEST_CASE("add_ancf_beam refuses a bad section or material before it adds a block", "[input]") {

@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include "cantilever.hpp"
+#include "error_cases.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -57,16 +58,10 @@ void run_dynamics(const solvers::DynamicOptions& options, core::LoadHistory hist
   for (int i = 0; i < 3; ++i) integrator.step();
 }
 
-struct Case {
-  std::string name;
-  std::function<void()> call;
-  std::string word;
-};
-
 }  // namespace
 
 TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[input]") {
-  const std::vector<Case> cases = {
+  const std::vector<test::ErrorCase> cases = {
       {"position_at with an empty configuration (SIGSEGV)",
        [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).position_at(core::Configuration{}, 0.5); }, "frame nodes"},
       {"rotation_at with an empty configuration",
@@ -230,16 +225,7 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
        },
        "1e-07"},
   };
-  for (const Case& c : cases) {
-    INFO(c.name);
-    std::string message;
-    try {
-      c.call();
-    } catch (const Error& error) {
-      message = error.what();
-    }
-    CHECK_THAT(message, Catch::Contains(c.word));
-  }
+  test::check_error_cases(cases);
 }
 
 TEST_CASE("every linear solver refuses a NaN matrix and names the entry", "[input]") {
