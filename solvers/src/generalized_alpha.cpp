@@ -237,12 +237,10 @@ struct GeneralizedAlpha::Implementation {
       std::ostringstream what;
       what << "the iteration matrix is singular at t = " << time << " (step " << counters.steps + 1
            << "): " << error.what();
-      const std::string massless = beams_without_inertia();
-      if (!massless.empty())
-        throw Error(what.str() + "; " + massless + " no section inertia (zero mass per length or a singular "
-                        "rotary inertia): its freedoms have no mass",
-                    "solvers::GeneralizedAlpha",
-                    "give the beam BeamParameters::inertia, e.g. core::SectionInertia::from(material, section)");
+      const std::string defects = mass_defects();
+      if (!defects.empty())
+        throw Error(what.str() + "; " + defects, "solvers::GeneralizedAlpha",
+                    "give the parts named above mass (each says how)");
       throw Error(what.str(), "solvers::GeneralizedAlpha",
                   "check for a redundant constraint (e.g. two joints fixing the same freedom) or a "
                   "freedom with neither mass nor constraint (e.g. a beam without section inertia, "
@@ -253,18 +251,18 @@ struct GeneralizedAlpha::Implementation {
     have_factorization = true;
   }
 
-  /// "beam 0 has" / "beams 0, 2 have" for the model's beams whose section inertia leaves freedoms
-  /// without mass (zero ρA or a singular rotary inertia); empty when there are none.
-  std::string beams_without_inertia() const {
-    std::vector<int> beams;
-    for (int b = 0; b < model.beam_count(); ++b) {
-      const core::SectionInertia& inertia = model.beam(b).inertia();
-      if (!(inertia.mass_per_length > 0.0) || !(std::abs(inertia.rotary.determinant()) > 0.0)) beams.push_back(b);
+  /// What the model's elements say of freedoms they leave without mass (Element::mass_defect),
+  /// each distinct message once, joined by "; "; empty when there are none.
+  std::string mass_defects() const {
+    std::vector<std::string> defects;
+    for (int i = 0; i < model.element_count(); ++i) {
+      std::string defect = model.element(i).mass_defect();
+      if (!defect.empty() && std::find(defects.begin(), defects.end(), defect) == defects.end())
+        defects.push_back(std::move(defect));
     }
-    if (beams.empty()) return "";
-    std::string list;
-    for (std::size_t i = 0; i < beams.size(); ++i) list += (i ? ", " : "") + std::to_string(beams[i]);
-    return (beams.size() == 1 ? "beam " : "beams ") + list + (beams.size() == 1 ? " has" : " have");
+    std::string joined;
+    for (const std::string& defect : defects) joined += (joined.empty() ? "" : "; ") + defect;
+    return joined;
   }
 
   // Initial conditions ---------------------------------------------------------------------------

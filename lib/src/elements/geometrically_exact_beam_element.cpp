@@ -3,6 +3,8 @@
 #include <spar/core/beam_element.hpp>
 #include <spar/core/inertia.hpp>
 
+#include <cmath>
+
 namespace spar::core {
 
 std::vector<double> beam_shape_integrals(const GeometricallyExactBeam& beam, int e) {
@@ -24,6 +26,15 @@ GeometricallyExactBeamElement::GeometricallyExactBeamElement(const Geometrically
 
 std::string GeometricallyExactBeamElement::name() const {
   return "beam " + std::to_string(beam_index_) + ", element " + std::to_string(element_);
+}
+
+std::string GeometricallyExactBeamElement::mass_defect() const {
+  const SectionInertia& inertia = beam_->inertia();
+  if (inertia.mass_per_length > 0.0 && std::abs(inertia.rotary.determinant()) > 0.0) return {};
+  return "beam " + std::to_string(beam_index_) +
+         " has no section inertia (zero mass per length or a singular rotary inertia): its freedoms "
+         "have no mass; give the beam BeamParameters::inertia, e.g. "
+         "core::SectionInertia::from(material, section)";
 }
 
 void GeometricallyExactBeamElement::compute(const ElementInput& in, const ElementRequest& request,

@@ -102,6 +102,11 @@ public:
   /// residual untested) it evaluates these elements alone (docs/dynamics.md D8). An element that
   /// returns an external force must say so here, or its work is missing from such runs' balance.
   virtual bool has_external_force() const { return false; }
+  /// In dynamics: why this element leaves some of its freedoms without mass, and how to give
+  /// them mass (a beam whose section has no inertia), in words for an error message; empty when
+  /// every freedom it couples has mass from it. GeneralizedAlpha adds these words to the error of
+  /// a singular iteration matrix, so a family names its own defect and the integrator none.
+  virtual std::string mass_defect() const { return {}; }
 
 private:
   /// The element's own computation behind evaluate(), which has checked `in` (the

@@ -22,6 +22,7 @@ public:
 
   const std::vector<int>& blocks() const override { return blocks_; }
   std::string name() const override;
+  std::string mass_defect() const override;
 
 private:
   void compute(const ElementInput& in, const ElementRequest& request,
