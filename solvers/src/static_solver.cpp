@@ -3,8 +3,6 @@
 #include "round_off.hpp"
 #include "system_assembly.hpp"
 
-#include <spar/core/elements/load_elements.hpp>
-
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
@@ -24,19 +22,11 @@ double free_norm(const Eigen::VectorXd& v, const std::vector<char>& fixed, int c
   return norm;
 }
 
-/// Whether the model carries a moment load (nodal or distributed, material or inertial): such a
-/// moment does no work that a potential gives for 3D rotations, so the energy criterion of
-/// stability does not apply (docs/errors.md).
-bool has_moment_load(const core::Model& model) {
-  for (int i = 0; i < model.element_count(); ++i) {
-    const core::Element& element = model.element(i);
-    const core::Load* load = nullptr;
-    if (const auto* nodal = dynamic_cast<const core::NodalLoadElement*>(&element)) load = &nodal->load();
-    if (const auto* distributed = dynamic_cast<const core::DistributedLoadElement*>(&element))
-      load = &distributed->load();
-    if (load && (std::holds_alternative<core::NodalMoment>(*load) || std::holds_alternative<core::DistributedMoment>(*load)))
-      return true;
-  }
+/// Whether an element's static forces derive from no potential (Element::has_potential, e.g. a
+/// moment load): then the energy criterion of stability does not apply (docs/errors.md).
+bool has_non_potential_force(const core::Model& model) {
+  for (int i = 0; i < model.element_count(); ++i)
+    if (!model.element(i).has_potential()) return true;
   return false;
 }
 
@@ -69,7 +59,7 @@ public:
   /// only while K itself was regular: a structure held by a joint alone has rigid modes in K, and
   /// their pivots were zero or round-off (found when an exact zero appeared, issue 17).
   int unstable_directions() {
-    if (has_moment_load(model_)) return -1;
+    if (has_non_potential_force(model_)) return -1;
     Eigen::VectorXd unused = Eigen::VectorXd::Zero(assembly_.size());
     assembly_.pattern().apply_dirichlet(model_.fixed_dofs(), unused);
     const SparseMatrix& A = assembly_.pattern().matrix();

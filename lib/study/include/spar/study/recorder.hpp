@@ -1,0 +1,205 @@
+#pragma once
+/// \file
+/// A study's run and what it records (docs/output.md, "Studies"). A driver declares what it
+/// wants to see — scalars and vectors (a value with its unit and meaning), the energy balance,
+/// the constraint residual and the Newton iterations, centerlines, rigid bodies' shapes, the
+/// columns of a CSV, snapshots of the centerlines, run metadata — and when; run() then steps the
+/// integrator to the end time, drives the progress bar and writes the results file (HDF5 + XDMF
+/// through output::ResultsWriter), the CSV and the snapshots, keeping every scalar's running
+/// reductions for the JSON summary (output::JsonSummary). close() adds the solver's counters.
+///
+///     study::Recorder rec(integrator, {.folder = out, .name = "pendulum", .time_step = h});
+///     const study::Scalar drift = rec.scalar({.name = "energy_drift", .unit = "1", .description = "(E - E0)/E0"},
+///         [&](const study::State& s) { return (s.energies().total() - e0) / e0; });
+///     rec.energy_balance();
+///     rec.csv({"energy_drift", "kinetic_energy"});
+///     rec.run(t_end);
+///     rec.close();
+///     output::JsonSummary().add("max_energy_drift", drift.max_abs()).print();
+
+#include <spar/output/recording_summary.hpp>
+#include <spar/output/results_writer.hpp>
+#include <spar/solvers/generalized_alpha.hpp>
+#include <spar/study/schedule.hpp>
+#include <spar/study/state.hpp>
+
+#include <Eigen/Core>
+
+#include <concepts>
+#include <functional>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace spar::study {
+
+class Recorder;
+
+/// A declared scalar: its value at the last evaluated step and its running reductions over the
+/// evaluated steps (every step with Quantity::every_step, else the recorded ones; the start
+/// included). Before any evaluation: NaN for last(), −∞/+∞ for max()/min(), 0 for max_abs().
+class Scalar {
+public:
+  double last() const;
+  double max() const;
+  double min() const;
+  double max_abs() const;
+
+private:
+  friend class Recorder;
+  Scalar(const Recorder& recorder, int index) : recorder_(&recorder), index_(index) {}
+  const Recorder* recorder_;
+  int index_;
+};
+
+/// A declared vector: its value at the last evaluated step (NaN before).
+class Vector {
+public:
+  Eigen::Vector3d last() const;
+
+private:
+  friend class Recorder;
+  Vector(const Recorder& recorder, int index) : recorder_(&recorder), index_(index) {}
+  const Recorder* recorder_;
+  int index_;
+};
+
+/// The scalars of the energy balance (docs/dynamics.md D8).
+struct EnergyBalance {
+  Scalar kinetic, strain, gravity, external_work, numerical_dissipation;
+};
+
+struct RecorderOptions {
+  std::string folder;      ///< where the files go (a driver's --out)
+  std::string name;        ///< their stem: <name>.h5 (+ .xmf), <name>.csv; the progress bar's label
+  double time_step = 0.0;  ///< h: the run's end is t_end − h/2, the schedules' tolerance h/2
+  /// The states the results file and the CSV get (the CSV may have its own: csv()).
+  Schedule schedule = Schedule::every_step();
+  bool nodes = false;       ///< every block's position and rotation (ResultsLayout::node_count)
+  bool velocities = false;  ///< the nodes' velocities and the shapes' vertex velocities
+  /// λ, as many as the integrator has at the start (a constraint added later, an end stop's lock,
+  /// is left out of the file).
+  bool multipliers = false;
+  /// Every centerline's reference arc length from its root (the sums of its sample's chords at the
+  /// start: exact for straight beams) and its velocity, as point data ParaView colours by.
+  bool centerline_fields = false;
+  int csv_digits = 0;       ///< output::CsvFile's digits (0: the shortest text that reads back the same)
+  int flush_every = 100;    ///< output::ResultsWriter's block of steps
+};
+
+/// Snapshots of every centerline in one long CSV: a row per point, "t, line, [label,] x, y, z".
+struct Snapshots {
+  std::string file;    ///< in the folder, e.g. "sliding_beam_snapshots.csv"
+  std::string header;  ///< e.g. "t,beam,x,y,z"
+  Schedule schedule;
+  int digits = 9;
+  std::vector<double> labels;  ///< per centerline, a number written after its index (none: no column)
+};
+
+/// What run() does besides stepping and recording, after each step and before its recording.
+struct RunHooks {
+  std::function<void()> each_step;  ///< e.g. advance a reference solution, control a mesh
+  std::function<bool()> stop_when;  ///< true: record this step as the last and stop
+};
+
+/// A root attribute of the results file (output::ResultsWriter::write_attribute).
+using Attribute = std::pair<std::string, std::variant<double, long, std::string>>;
+
+class Recorder {
+public:
+  /// Records `integrator`'s run. Declare everything, then run(); the files are made by run().
+  /// spar::Error for an empty folder or name or a time step that is not positive.
+  Recorder(solvers::GeneralizedAlpha& integrator, RecorderOptions options);
+  /// Closes the files if close() was not called, reporting a failure on stderr.
+  ~Recorder();
+  Recorder(const Recorder&) = delete;
+  Recorder& operator=(const Recorder&) = delete;
+
+  /// A scalar; `value` takes a const State& (or nothing) and returns a double.
+  template <class F>
+  Scalar scalar(Quantity quantity, F&& value) {
+    return add_scalar(std::move(quantity), evaluator<double>(std::forward<F>(value)));
+  }
+  /// A 3-vector (a probe of the results file), e.g. a point's position.
+  template <class F>
+  Vector vector(Quantity quantity, F&& value) {
+    return add_vector(std::move(quantity), evaluator<Eigen::Vector3d>(std::forward<F>(value)));
+  }
+  /// kinetic_energy, strain_energy, gravity_potential, external_work, numerical_dissipation (J).
+  EnergyBalance energy_balance();
+  /// ‖Φ‖∞ after the step, "constraint_residual" in m unless `quantity` says otherwise.
+  Scalar constraint_residual(Quantity quantity = {});
+  /// The Newton iterations of the step, "newton_iterations", an integer, unless `quantity` says otherwise.
+  Scalar newton_iterations(Quantity quantity = {});
+
+  /// A centerline of `points` points, root to tip (`velocities` needed with centerline_fields).
+  void centerline(int points, std::function<Eigen::MatrixXd(const State&)> positions,
+                  std::function<Eigen::MatrixXd(const State&)> velocities = {});
+  /// A centerline from a sampler with size() and positions(q), and velocities(q, v) if it has it
+  /// (core::CenterlineSampler).
+  template <class Sampler>
+    requires requires(const Sampler& s, const core::Configuration& q) {
+      { s.size() } -> std::convertible_to<int>;
+      { s.positions(q) } -> std::convertible_to<Eigen::MatrixXd>;
+    }
+  void centerline(Sampler sampler) {
+    auto shared = std::make_shared<const Sampler>(std::move(sampler));
+    std::function<Eigen::MatrixXd(const State&)> velocities;
+    if constexpr (requires(const core::Configuration& q, const Eigen::VectorXd& v) { shared->velocities(q, v); })
+      velocities = [shared](const State& s) -> Eigen::MatrixXd { return shared->velocities(s.q, s.velocity); };
+    centerline(shared->size(), [shared](const State& s) -> Eigen::MatrixXd { return shared->positions(s.q); },
+               std::move(velocities));
+  }
+  /// A rigid body's shape in the XDMF sidecar (docs/output.md, "Rigid bodies").
+  void shape(const output::RigidBodyShape& shape);
+
+  /// The CSV <name>.csv: the time, then the columns of the named quantities in this order, at
+  /// the file's states or at `schedule`'s.
+  void csv(std::vector<std::string> columns);
+  void csv(std::vector<std::string> columns, Schedule schedule);
+  /// A CSV of the centerlines' points at `snapshots.schedule`.
+  void snapshots(Snapshots snapshots);
+
+  /// Root attributes of the results file (any time; "time_step" is written by itself).
+  void attributes(const std::vector<Attribute>& attributes);
+  /// A constant dataset (output::ResultsWriter::write_constant), after run().
+  void constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
+                const std::string& description);
+
+  /// Makes the files, records the start, then steps until t_end − h/2 or until hooks.stop_when,
+  /// recording each step as scheduled. Call integrator.initialize() first.
+  void run(double t_end, const RunHooks& hooks = {});
+  /// Writes the counters (t_end, steps, newton_iterations, factorizations,
+  /// substructured_factorizations, jtheta_updates, cutbacks) as attributes and closes the files.
+  void close();
+
+  /// A JSON summary holding the run's counters: steps, newton_iterations, factorizations, cutbacks
+  /// and wall_s (the integrator's wall time); the driver adds its figures and prints it.
+  output::JsonSummary summary() const;
+  /// Wall time of run()'s loop, s; states written to the results file.
+  double wall_seconds() const { return wall_seconds_; }
+  int states_written() const;
+
+private:
+  friend class Scalar;
+  friend class Vector;
+  struct Impl;
+
+  template <class R, class F>
+  static std::function<R(const State&)> evaluator(F&& f) {
+    if constexpr (std::is_invocable_v<F&, const State&>)
+      return [f = std::forward<F>(f)](const State& s) -> R { return f(s); };
+    else
+      return [f = std::forward<F>(f)](const State&) -> R { return f(); };
+  }
+  Scalar add_scalar(Quantity quantity, std::function<double(const State&)> value);
+  Vector add_vector(Quantity quantity, std::function<Eigen::Vector3d(const State&)> value);
+
+  std::unique_ptr<Impl> impl_;
+  double wall_seconds_ = 0.0;
+};
+
+}  // namespace spar::study
