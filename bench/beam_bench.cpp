@@ -38,11 +38,11 @@ BENCHMARK(beam_element)->ArgsProduct({{1, 2, 3}, {0, 1}})->ArgNames({"p", "stiff
 void cantilever_newton_64_elements(benchmark::State& state) {
   for (auto _ : state) {
     core::Model model;
-    const int b = model.add_beam({.centerline = straight(64, 3), .stiffness = steel_square()});
-    const int tip = model.beam(b).node(model.beam(b).control_point_count() - 1);
-    model.fix(model.beam(b).node(0));
+    const int b = core::add_beam(model, {.centerline = straight(64, 3), .stiffness = steel_square()});
+    const int tip = core::beam(model, b).node(core::beam(model, b).control_point_count() - 1);
+    model.fix(core::beam(model, b).node(0));
     const double EI = steel_square().bending_3;
-    model.add_load(core::NodalForce{.node = tip, .force = Eigen::Vector3d(0, 10 * EI, 0)});
+    core::add_load(model, core::NodalForce{.node = tip, .force = Eigen::Vector3d(0, 10 * EI, 0)});
     const solvers::StaticReport report = solvers::solve_static(model, {.load_steps = 10});
     state.counters["newton_iterations"] = report.newton_iterations;
   }

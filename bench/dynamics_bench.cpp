@@ -53,7 +53,7 @@ void slider_crank_limit(benchmark::State& state) {
   mechanism.model.state() = integrator.configuration();
   std::vector<joints::Constraint*> constraints;
   for (auto& joint : mechanism.joints) constraints.push_back(joint.get());
-  solvers::detail::SystemAssembly assembly(mechanism.model, constraints, core::AssemblyExecution::serial);
+  solvers::detail::SystemAssembly assembly(mechanism.model, constraints, solvers::AssemblyExecution::serial);
   const Eigen::VectorXd velocity = integrator.velocity(), acceleration = integrator.acceleration();
   const Eigen::VectorXd lambda = integrator.multipliers();
   const Eigen::VectorXd increment = Eigen::VectorXd::Zero(assembly.dof_count());
@@ -107,13 +107,13 @@ BENCHMARK(slider_crank_step)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 
 /// Ten steps of a free 256-element cubic beam (ρ∞ = 0.9, h = 1e-4), serial or parallel assembly.
 void free_beam_256_elements(benchmark::State& state) {
-  const auto execution = state.range(0) ? core::AssemblyExecution::parallel : core::AssemblyExecution::serial;
+  const auto execution = state.range(0) ? solvers::AssemblyExecution::parallel : solvers::AssemblyExecution::serial;
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection square = core::CrossSection::rectangle(0.01, 0.01, 0.3);
   for (auto _ : state) {
     state.PauseTiming();
     core::Model model;
-    model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 256, 3),
+    core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 256, 3),
                     .stiffness = core::SectionStiffness::from(steel, square),
                     .inertia = core::SectionInertia::from(steel, square)});
     model.set_gravity(Eigen::Vector3d(0, -9.81, 0));

@@ -32,11 +32,11 @@ struct Cantilever {
   explicit Cantilever(int elements) {
     const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
     const core::CrossSection section = core::CrossSection::rectangle(0.03, 0.001, steel.poisson_ratio);
-    beam = model.add_beam(
+    beam = core::add_beam(model, 
         {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), elements, 3),
          .stiffness = core::SectionStiffness::from(steel, section),
          .inertia = core::SectionInertia::from(steel, section)});
-    model.fix(model.beam(beam).node(0));
+    model.fix(core::beam(model, beam).node(0));
     model.set_gravity(Eigen::Vector3d(0.0, 0.0, -9.81));
   }
 };
@@ -55,13 +55,13 @@ void cantilever(benchmark::State& state) {
     solvers::GeneralizedAlpha integrator(
         cantilever.model, {},
         {.time_step = 2.5e-4,
-         .assembly = parallel ? core::AssemblyExecution::parallel : core::AssemblyExecution::serial});
+         .assembly = parallel ? solvers::AssemblyExecution::parallel : solvers::AssemblyExecution::serial});
     integrator.initialize();
-    core::ResultsWriter results(path, {.node_count = cantilever.model.block_count(),
+    output::ResultsWriter results(path, {.node_count = cantilever.model.block_count(),
                                        .scalars = {{.name = "total_energy", .unit = "J", .description = "E"}},
                                        .centerline_points = {samples}});
     // The centerline's basis once for the run, as the examples sample it (core::CenterlineSampler).
-    const core::CenterlineSampler centerline(cantilever.model.beam(cantilever.beam), samples);
+    const core::CenterlineSampler centerline(core::beam(cantilever.model, cantilever.beam), samples);
     const long before = integrator.counters().newton_iterations;
     state.ResumeTiming();
     for (int step = 0; step < steps; ++step) {
@@ -95,7 +95,7 @@ BENCHMARK(cantilever)
 /// kernels, combination and scatter), as the integrator's Newton iteration runs it.
 void assembly(benchmark::State& state) {
   const int elements = static_cast<int>(state.range(0));
-  const auto execution = state.range(1) ? core::AssemblyExecution::parallel : core::AssemblyExecution::serial;
+  const auto execution = state.range(1) ? solvers::AssemblyExecution::parallel : solvers::AssemblyExecution::serial;
   Cantilever cantilever(elements);
   const core::Model& model = cantilever.model;
   const core::Configuration& q = model.state();
@@ -103,12 +103,12 @@ void assembly(benchmark::State& state) {
   const core::ElementInput in{.q = &q, .velocity = &velocity, .acceleration = &velocity,
                               .gravity = model.gravity()};
   const core::ElementRequest request{.stiffness = true, .damping = true, .mass = true};
-  std::vector<core::PatternBlock> blocks;
+  std::vector<solvers::PatternBlock> blocks;
   for (int e = 0; e < model.element_count(); ++e)
-    blocks.push_back(core::PatternBlock::element(core::block_dofs(q, model.element(e).blocks())));
-  core::SparsePattern pattern(model.dof_count(), blocks);
+    blocks.push_back(solvers::PatternBlock::element(core::block_dofs(q, model.element(e).blocks())));
+  solvers::SparsePattern pattern(model.dof_count(), blocks);
   std::vector<core::ElementOutput> outputs(static_cast<std::size_t>(model.element_count()));
-  const core::BlockCompute compute = [&](int e, Eigen::MatrixXd& K) {
+  const solvers::BlockCompute compute = [&](int e, Eigen::MatrixXd& K) {
     core::ElementOutput& out = outputs[static_cast<std::size_t>(e)];
     out.reset(static_cast<int>(K.rows()), request);
     model.element(e).evaluate(in, request, out);

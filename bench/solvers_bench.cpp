@@ -4,7 +4,7 @@
 //   at one end and pinned at the other through 9 Lagrange-multiplier rows (a saddle point matrix);
 // - serial against parallel assembly of 200 dense 24 × 24 element blocks into a SparsePattern.
 // Run: bench_solvers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 #include <spar/solvers/linear_solver.hpp>
 
 #include <benchmark/benchmark.h>
@@ -15,7 +15,7 @@
 
 namespace {
 
-using spar::core::PatternBlock;
+using spar::solvers::PatternBlock;
 
 constexpr int frame_dofs = 6;
 constexpr int nodes_per_element = 4;  // cubic B-spline
@@ -83,9 +83,9 @@ private:
 };
 
 /// The assembled iteration matrix of a beam of `elements` elements.
-spar::core::SparseMatrix beam_matrix(int elements) {
+spar::solvers::SparseMatrix beam_matrix(int elements) {
   const BeamSystem system = beam_system(elements);
-  spar::core::SparsePattern pattern(system.size, system.blocks);
+  spar::solvers::SparsePattern pattern(system.size, system.blocks);
   const ElementKernel kernel;
   pattern.assemble([&](int block_id, Eigen::MatrixXd& K) {
     if (block_id < elements)
@@ -98,7 +98,7 @@ spar::core::SparseMatrix beam_matrix(int elements) {
 
 void factorize_and_solve(benchmark::State& state, spar::solvers::LinearSolverKind kind) {
   // 400 nodes: 397 cubic elements.
-  const spar::core::SparseMatrix A = beam_matrix(397);
+  const spar::solvers::SparseMatrix A = beam_matrix(397);
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(A.rows());
   Eigen::VectorXd x(A.rows());
   auto solver = spar::solvers::make_linear_solver(kind);
@@ -120,12 +120,12 @@ BENCHMARK_CAPTURE(factorize_and_solve, umfpack, spar::solvers::LinearSolverKind:
 BENCHMARK_CAPTURE(factorize_and_solve, eigen_lu, spar::solvers::LinearSolverKind::eigen_lu)
     ->Unit(benchmark::kMicrosecond);
 
-void assemble(benchmark::State& state, spar::core::AssemblyExecution execution) {
+void assemble(benchmark::State& state, spar::solvers::AssemblyExecution execution) {
   // 200 elements of 24 × 24, no constraints.
   const BeamSystem system = beam_system(200);
-  spar::core::SparsePattern pattern(system.size, system.blocks);
+  spar::solvers::SparsePattern pattern(system.size, system.blocks);
   const ElementKernel kernel;
-  const spar::core::BlockCompute compute = [&](int block_id, Eigen::MatrixXd& K) {
+  const spar::solvers::BlockCompute compute = [&](int block_id, Eigen::MatrixXd& K) {
     kernel(block_id, K);
   };
   for (auto _ : state) {
@@ -133,28 +133,28 @@ void assemble(benchmark::State& state, spar::core::AssemblyExecution execution) 
     benchmark::DoNotOptimize(pattern.matrix().valuePtr());
   }
 }
-BENCHMARK_CAPTURE(assemble, serial, spar::core::AssemblyExecution::serial)
+BENCHMARK_CAPTURE(assemble, serial, spar::solvers::AssemblyExecution::serial)
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(assemble, parallel, spar::core::AssemblyExecution::parallel)
+BENCHMARK_CAPTURE(assemble, parallel, spar::solvers::AssemblyExecution::parallel)
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 
-void scatter_only(benchmark::State& state, spar::core::AssemblyExecution execution) {
+void scatter_only(benchmark::State& state, spar::solvers::AssemblyExecution execution) {
   // The assembly overhead alone (scatter; in parallel the block store and the gather): the
   // block is a constant.
   const BeamSystem system = beam_system(200);
-  spar::core::SparsePattern pattern(system.size, system.blocks);
-  const spar::core::BlockCompute compute = [](int, Eigen::MatrixXd& K) { K.setConstant(1.0); };
+  spar::solvers::SparsePattern pattern(system.size, system.blocks);
+  const spar::solvers::BlockCompute compute = [](int, Eigen::MatrixXd& K) { K.setConstant(1.0); };
   for (auto _ : state) {
     pattern.assemble(compute, execution);
     benchmark::DoNotOptimize(pattern.matrix().valuePtr());
   }
 }
-BENCHMARK_CAPTURE(scatter_only, serial, spar::core::AssemblyExecution::serial)
+BENCHMARK_CAPTURE(scatter_only, serial, spar::solvers::AssemblyExecution::serial)
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(scatter_only, parallel, spar::core::AssemblyExecution::parallel)
+BENCHMARK_CAPTURE(scatter_only, parallel, spar::solvers::AssemblyExecution::parallel)
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 

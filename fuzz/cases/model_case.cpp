@@ -1,9 +1,13 @@
 #include "model_case.hpp"
 
 #include <spar/core/core.hpp>
+#include <spar/elements/elements.hpp>
 #include <spar/iga/iga.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <cmath>
 
@@ -35,18 +39,18 @@ Built build(FuzzSource& f, CaseLog& log, core::Model& model) {
   const int degree = log.note("degree", f.count(f.integer(1, 3)));
   const Eigen::Vector3d hint = log.note("section axis hint", f.vector(1.0, 0.02));
   const int quadrature = log.note("quadrature points", f.chance(0.1) ? f.count(3, 1.0) : 0);
-  const int b = model.add_beam({.centerline = iga::straight_line<3>(start, end, elements, degree),
+  const int b = core::add_beam(model, {.centerline = iga::straight_line<3>(start, end, elements, degree),
                                 .stiffness = core::SectionStiffness::from(material, section),
                                 .inertia = core::SectionInertia::from(material, section),
                                 .section_axis_hint = hint,
                                 .quadrature_points = quadrature});
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   model.fix(beam.node(0));
   const Built built{.tip = beam.node(beam.control_point_count() - 1)};
-  model.add_load(core::NodalForce{.node = built.tip, .force = log.note("tip force", f.vector(1.0))});
+  core::add_load(model, core::NodalForce{.node = built.tip, .force = log.note("tip force", f.vector(1.0))});
   if (f.chance(0.5)) {
     const bool follower = log.note("follower moment", f.chance(0.5));
-    model.add_load(core::NodalMoment{.node = built.tip, .moment = log.note("tip moment", f.vector(0.1)),
+    core::add_load(model, core::NodalMoment{.node = built.tip, .moment = log.note("tip moment", f.vector(0.1)),
                                      .frame = follower ? core::MomentFrame::material : core::MomentFrame::inertial});
   }
   model.set_gravity(log.note("gravity", f.vector(10.0)));
@@ -54,7 +58,7 @@ Built build(FuzzSource& f, CaseLog& log, core::Model& model) {
     const Eigen::Vector3d moments = log.note(
         "body inertia", Eigen::Vector3d{f.value(f.uniform(0.1, 1.0)), f.value(f.uniform(0.1, 1.0)),
                                         f.value(f.uniform(0.1, 1.0))});
-    const int body = model.rigid_body(model.add_rigid_body({.center_of_mass = log.note("body centre", f.vector(1.0)),
+    const int body = core::rigid_body(model, core::add_rigid_body(model, {.center_of_mass = log.note("body centre", f.vector(1.0)),
                                                             .mass = log.note("body mass", f.value(f.uniform(0.1, 10.0))),
                                                             .inertia = moments.asDiagonal()}))
                          .node;

@@ -1,7 +1,8 @@
 // The ANCF element kernels and the ANCF joint allocate nothing once their outputs are sized: every
 // global operator new of this executable is counted (tests/support/allocation_counter.cpp).
-#include <spar/core/ancf_beam.hpp>
-#include <spar/joints/ancf_spherical_joint.hpp>
+#include <spar/elements/ancf/ancf_beam.hpp>
+#include <spar/elements/ancf/ancf_points.hpp>
+#include <spar/joints/point_joint.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -27,7 +28,7 @@ TEST_CASE("ANCF element evaluation and joint do not allocate", "[ancf][allocatio
       const int n = core::block_dof_count(model.state(), element.blocks());
       core::ElementOutput out;
       out.reset(n, all);
-      const joints::AncfSphericalJoint joint(joints::ancf_element_point(beam, 0, 0.3), Eigen::Vector3d::Zero(),
+      const joints::PointJoint joint(core::ancf_element_point(beam, 0, 0.3), Eigen::Vector3d::Zero(),
                                              model.state());
       Eigen::Vector3d phi;
       Eigen::MatrixXd B(3, core::block_dof_count(model.state(), joint.blocks()));

@@ -1,6 +1,6 @@
 // Paper 001's static cantilever (§6, Table 1) with the ANCF elements: against Euler–Bernoulli /
 // Timoshenko theory at ν = 0, and the Poisson locking at ν = 0.33 measured against its closed form.
-#include <spar/core/ancf_beam.hpp>
+#include <spar/elements/ancf/ancf_beam.hpp>
 #include <spar/solvers/static_solver.hpp>
 
 #include <catch2/catch.hpp>

@@ -1,7 +1,8 @@
 // Paper 001's spatial double pendulum (examples/ancf_double_pendulum) over its first 0.1 s: two
 // ANCF links joined by ball joints keep their joints closed and, with ρ∞ = 1, their energy.
-#include <spar/core/ancf_beam.hpp>
-#include <spar/joints/ancf_spherical_joint.hpp>
+#include <spar/elements/ancf/ancf_beam.hpp>
+#include <spar/elements/ancf/ancf_points.hpp>
+#include <spar/joints/point_joint.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 
 #include <catch2/catch.hpp>
@@ -23,10 +24,10 @@ TEST_CASE("ANCF double pendulum: ball joints hold and energy is conserved", "[an
         model, {.start = A, .end = A + Eigen::Vector3d(0, 0.8, 0), .y_direction = -Eigen::Vector3d::UnitX(),
                 .elements = 5, .method = method, .material = material, .section = section});
     solvers::ConstraintList joints;
-    joints.push_back(std::make_unique<joints::AncfSphericalJoint>(joints::ancf_node_point(model.state(), oa.nodes.front()),
+    joints.push_back(std::make_unique<joints::PointJoint>(core::ancf_node_point(model.state(), oa.nodes.front()),
                                                                   Eigen::Vector3d::Zero(), model.state()));
-    joints.push_back(std::make_unique<joints::AncfSphericalJoint>(joints::ancf_node_point(model.state(), oa.nodes.back()),
-                                                                  joints::ancf_node_point(model.state(), ab.nodes.front()),
+    joints.push_back(std::make_unique<joints::PointJoint>(core::ancf_node_point(model.state(), oa.nodes.back()),
+                                                                  core::ancf_node_point(model.state(), ab.nodes.front()),
                                                                   model.state()));
     solvers::GeneralizedAlpha integrator(model, std::move(joints),
                                          {.time_step = 1e-4, .spectral_radius = 1.0, .tolerance = 1e-20,

@@ -1,7 +1,7 @@
 // A free ANCF element, thrown spinning and bending without gravity: with ρ∞ = 1 (no numerical
 // dissipation) the generalized-α method keeps kinetic + strain energy constant to its accuracy,
 // which checks the mass matrix and the elastic force together in a dynamic run.
-#include <spar/core/ancf_beam.hpp>
+#include <spar/elements/ancf/ancf_beam.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 
 #include <catch2/catch.hpp>

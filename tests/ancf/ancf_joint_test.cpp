@@ -1,9 +1,11 @@
 // Spherical joints on ANCF beams: the point inside an element against the literal shape functions
 // of 001 eqs. (5)/(55), and B against finite differences of Φ.
-#include <spar/core/ancf_beam.hpp>
-#include <spar/core/elements/vector_load_element.hpp>
+#include <spar/elements/ancf/ancf_beam.hpp>
+#include <spar/elements/loads/vector_load_element.hpp>
 #include <spar/error.hpp>
-#include <spar/joints/ancf_spherical_joint.hpp>
+#include <spar/elements/ancf/ancf_points.hpp>
+#include <spar/joints/point_joint.hpp>
+#include <spar/joints/check_constraint.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -33,7 +35,7 @@ void check_point(core::AncfElementKind kind) {
   const core::Configuration& q = model.state();
   const double xi = 0.37;
   const Eigen::Vector2d yz(0.02, -0.01);
-  const joints::LinearPoint p = joints::ancf_element_point(beam, 1, xi, yz);
+  const core::LinearPoint p = core::ancf_element_point(beam, 1, xi, yz);
   // The literal S(x, y, z) e of 001 on element 1.
   const auto S = test::literal_shape<transverse>(xi * beam.element_length, yz.x(), yz.y(), beam.element_length);
   Eigen::VectorXd e(3 * S.size());
@@ -45,7 +47,7 @@ void check_point(core::AncfElementKind kind) {
   // A few terms of size ≤ 1.5: round-off ≤ 1e-15.
   CHECK((p.position(q) - literal).norm() < 1e-14);
   // The node point is r.
-  CHECK(joints::ancf_node_point(q, beam.nodes[2]).position(q) == q.vector(beam.nodes[2]).head<3>());
+  CHECK(core::ancf_node_point(q, beam.nodes[2]).position(q) == q.vector(beam.nodes[2]).head<3>());
 }
 
 }  // namespace
@@ -62,24 +64,20 @@ TEST_CASE("ANCF spherical joint: B against finite differences, zero tangent and 
     const core::Configuration& q = model.state();
     // A point inside element 1 held at an ANCF node shared with its own element's node B: the
     // shared block enters once.
-    const joints::AncfSphericalJoint joint(joints::ancf_element_point(beam, 1, 0.6), joints::ancf_node_point(q, beam.nodes[2]), q);
+    const joints::PointJoint joint(core::ancf_element_point(beam, 1, 0.6), core::ancf_node_point(q, beam.nodes[2]), q);
     const int n = core::block_dof_count(q, joint.blocks());
     REQUIRE(static_cast<int>(joint.blocks().size()) == (kind == core::AncfElementKind::standard_24 ? 2 : 3));
-    Eigen::MatrixXd B(3, n);
-    joint.jacobian(q, 0.0, B);
-    const std::vector<int> dofs = core::block_dofs(q, joint.blocks());
-    Eigen::MatrixXd fd(3, n);
-    for (int i = 0; i < n; ++i) {
-      core::Configuration plus = q, minus = q;
-      plus.values(dofs[i]) += 1e-6;
-      minus.values(dofs[i]) -= 1e-6;
-      Eigen::Vector3d fp, fm;
-      joint.value(plus, 0.0, fp);
-      joint.value(minus, 0.0, fm);
-      fd.col(i) = (fp - fm) / 2e-6;
-    }
-    // Φ is linear: central differences are exact up to round-off u|Φ|/ε ≈ 1e-10.
-    CHECK((B - fd).cwiseAbs().maxCoeff() < 1e-9);
+    // Φ is linear: central differences of step 1e-6 are exact up to round-off u|Φ|/ε ≈ 1e-10, and B's
+    // entries (shape functions) are at most 1 in size, so the errors are absolute (scale floor 1);
+    // K_λ and Φ_t have differences of exactly 0. The second difference along the motion is round-off
+    // 4u|Φ|/h² ≈ 4e-8, within the default 2e-6.
+    const core::DerivativeCheck check = joints::check_constraint(
+        joint,
+        {.q = q, .velocity = Eigen::VectorXd::Ones(q.dof_count()), .acceleration = Eigen::VectorXd::Zero(q.dof_count()),
+         .multipliers = Eigen::Vector3d(1, 2, 3)},
+        {.step = 1e-6, .tolerance = 1e-9, .scale_floor = 1.0});
+    INFO(check.description());
+    CHECK(check.passed());
     Eigen::MatrixXd K(n, n);
     joint.multiplier_tangent(q, 0.0, Eigen::Vector3d(1, 2, 3), K);
     CHECK(K.isZero(0.0));
@@ -87,16 +85,16 @@ TEST_CASE("ANCF spherical joint: B against finite differences, zero tangent and 
     joint.acceleration_terms(q, Eigen::VectorXd::Ones(q.dof_count()), 0.0, c);
     CHECK(c.isZero(0.0));
     // Held at the ground where the point is: Φ = 0.
-    const joints::AncfSphericalJoint pin(joints::ancf_node_point(q, beam.nodes[0]), q.vector(beam.nodes[0]).head<3>(), q);
+    const joints::PointJoint pin(core::ancf_node_point(q, beam.nodes[0]), q.vector(beam.nodes[0]).head<3>(), q);
     Eigen::Vector3d phi;
     pin.value(q, 0.0, phi);
     CHECK(phi.isZero(0.0));
   }
   core::AncfBeam beam;
   const core::Model model = deformed_beam(core::AncfElementKind::standard_24, beam);
-  CHECK_THROWS_AS(joints::ancf_element_point(beam, 3, 0.5), Error);
-  CHECK_THROWS_AS(joints::ancf_element_point(beam, 0, 1.5), Error);
-  CHECK_THROWS_AS(joints::ancf_node_point(model.state(), 99), Error);
+  CHECK_THROWS_AS(core::ancf_element_point(beam, 3, 0.5), Error);
+  CHECK_THROWS_AS(core::ancf_element_point(beam, 0, 1.5), Error);
+  CHECK_THROWS_AS(core::ancf_node_point(model.state(), 99), Error);
 }
 
 TEST_CASE("a dead force on an ANCF node: residual, external force, input errors", "[ancf][loads]") {

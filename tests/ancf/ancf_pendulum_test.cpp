@@ -1,10 +1,12 @@
 // Paper 001's flexible pendulum (examples/ancf_pendulum): the ANCF model and the geometrically
 // exact beam model of the same rod agree, and the ANCF pin holds exactly.
-#include <spar/core/ancf_beam.hpp>
+#include <spar/elements/ancf/ancf_beam.hpp>
 #include <spar/iga/straight_line.hpp>
-#include <spar/joints/ancf_spherical_joint.hpp>
+#include <spar/elements/ancf/ancf_points.hpp>
+#include <spar/joints/point_joint.hpp>
 #include <spar/joints/spherical_joint.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -26,7 +28,7 @@ Eigen::Vector3d ancf_tip(double& max_residual) {
       model, {.end = Eigen::Vector3d(length, 0, 0), .elements = 4, .kind = core::AncfElementKind::higher_order_30,
               .material = material, .section = core::SectionIntegrals::circle(radius)});
   solvers::ConstraintList joints;
-  joints.push_back(std::make_unique<joints::AncfSphericalJoint>(joints::ancf_node_point(model.state(), beam.nodes[0]),
+  joints.push_back(std::make_unique<joints::PointJoint>(core::ancf_node_point(model.state(), beam.nodes[0]),
                                                                 Eigen::Vector3d::Zero(), model.state()));
   solvers::GeneralizedAlpha integrator(model, std::move(joints), options);
   integrator.initialize();
@@ -42,17 +44,17 @@ Eigen::Vector3d gebt_tip() {
   core::Model model;
   model.set_gravity(Eigen::Vector3d(0, 0, -9.81));
   const core::CrossSection section = core::CrossSection::circle(2 * radius, 0.0);
-  const int b = model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), 8, 3),
+  const int b = core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), 8, 3),
                                 .stiffness = core::SectionStiffness::from(material, section),
                                 .inertia = core::SectionInertia::from(material, section)});
   solvers::ConstraintList joints;
   joints.push_back(std::make_unique<joints::SphericalJoint>(
-      joints::Attachment{.node = model.beam(b).node(0), .offset = Eigen::Vector3d::Zero()},
+      joints::Attachment{.node = core::beam(model, b).node(0), .offset = Eigen::Vector3d::Zero()},
       joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, model.state()));
   solvers::GeneralizedAlpha integrator(model, std::move(joints), options);
   integrator.initialize();
   while (integrator.time() < t_end - 0.5 * h) integrator.step();
-  return model.state().position[model.beam(b).node(model.beam(b).control_point_count() - 1)];
+  return model.state().position[core::beam(model, b).node(core::beam(model, b).control_point_count() - 1)];
 }
 
 }  // namespace

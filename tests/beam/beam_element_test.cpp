@@ -1,9 +1,9 @@
 // The geometrically exact beam element: its internal force is the gradient of its strain energy,
 // its stiffness is the exact symmetric Hessian, and both are objective. Every derivative is checked
 // against central finite differences on random large deformations (rotations up to 3 rad).
-#include <spar/core/beam.hpp>
-#include <spar/core/beam_element.hpp>
-#include <spar/core/centerline_sampler.hpp>
+#include <spar/elements/beam/beam.hpp>
+#include <spar/elements/beam/beam_element.hpp>
+#include <spar/elements/beam/centerline_sampler.hpp>
 #include <spar/iga/circular_arc.hpp>
 #include <spar/iga/knot_operations.hpp>
 #include <spar/lie/lie.hpp>

@@ -1,7 +1,7 @@
 // GeometricallyExactBeam::centerline_point: the centerline point and its parameter derivatives
 // as weights of the control points (003 eq. 53, docs/beam.md eq. B15), at any parameter, across
 // element boundaries, for rational carriers of every continuity.
-#include <spar/core/beam.hpp>
+#include <spar/elements/beam/beam.hpp>
 #include <spar/error.hpp>
 
 #include <catch2/catch.hpp>

@@ -6,6 +6,7 @@
 #include <spar/iga/circular_arc.hpp>
 #include <spar/iga/knot_operations.hpp>
 #include <spar/iga/straight_line.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -23,7 +24,7 @@ namespace {
 void check_refused(core::Model& model, const iga::NurbsCurve<3>& centerline, const std::string& word) {
   const int blocks = model.block_count(), elements = model.element_count();
   try {
-    model.add_beam({.centerline = centerline, .stiffness = test::generic_stiffness()});
+    core::add_beam(model, {.centerline = centerline, .stiffness = test::generic_stiffness()});
     FAIL_CHECK("the centerline was accepted: " << word);
     return;
   } catch (const Error& error) {
@@ -32,7 +33,7 @@ void check_refused(core::Model& model, const iga::NurbsCurve<3>& centerline, con
   }
   CHECK(model.block_count() == blocks);
   CHECK(model.element_count() == elements);
-  CHECK(model.beam_count() == 1);
+  CHECK(core::beam_count(model) == 1);
 }
 
 }  // namespace
@@ -40,7 +41,7 @@ void check_refused(core::Model& model, const iga::NurbsCurve<3>& centerline, con
 TEST_CASE("add_beam refuses coincident consecutive control points and a folded control polygon",
           "[gebt][errors]") {
   core::Model model;
-  model.add_beam({.centerline = test::straight_centerline(1.0, 2, 2), .stiffness = test::generic_stiffness()});
+  core::add_beam(model, {.centerline = test::straight_centerline(1.0, 2, 2), .stiffness = test::generic_stiffness()});
   const Eigen::Vector3d a(1.1, 2.2, -0.3), d(0.3, -0.7, 0.2);
   const iga::KnotVector two_elements = iga::KnotVector::open_uniform(2, 2, 1);
   // Control points 1 and 2 coincide: the tangent vanishes at the knot between them.
@@ -60,7 +61,7 @@ TEST_CASE("add_beam refuses coincident consecutive control points and a folded c
 TEST_CASE("add_beam accepts exact arcs, repeated knots and the examples' centerlines", "[gebt]") {
   core::Model model;
   const auto accepted = [&](const iga::NurbsCurve<3>& centerline) {
-    CHECK_NOTHROW(model.add_beam({.centerline = centerline, .stiffness = test::generic_stiffness(),
+    CHECK_NOTHROW(core::add_beam(model, {.centerline = centerline, .stiffness = test::generic_stiffness(),
                                   .section_axis_hint = Eigen::Vector3d(0.1, 0.2, 1.0)}));
   };
   // Exact arcs of 1 to 4 pieces (legs at right angles beside the middle control points, straight
@@ -78,5 +79,5 @@ TEST_CASE("add_beam accepts exact arcs, repeated knots and the examples' centerl
   B << Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1 - std::sqrt(3.0) / 2, 0.5, 0);
   accepted(iga::NurbsCurve<3>(iga::KnotVector({0, 0, 0, 1, 1, 1}, 2), B));
   accepted(iga::straight_line<3>(Eigen::Vector3d(8, 2, 2), Eigen::Vector3d(8, 0, 0), 400, 2));
-  CHECK(model.beam_count() == 7);
+  CHECK(core::beam_count(model) == 7);
 }

@@ -1,8 +1,10 @@
 // Distributed moments on beams: the local tangent against central differences of the force along
 // q ⊕ Δ (follower and dead), and a cantilever under a uniform moment against the exact solution.
-#include <spar/core/distributed_moment.hpp>
+#include <spar/elements/beam/distributed_moment.hpp>
 #include <spar/lie/lie.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -64,7 +66,7 @@ TEST_CASE("a cantilever under a uniform distributed moment bends as M(s) = m (L 
   for (core::MomentFrame frame : {core::MomentFrame::material, core::MomentFrame::inertial}) {
     auto c = test::make_cantilever(32, 3);
     const double EI = 1e4, L = 1.0, m = 3.0 * EI / (L * L);
-    c.model.add_load(core::DistributedMoment{.beam = c.beam, .moment_per_length = Eigen::Vector3d(0, 0, m),
+    core::add_load(c.model, core::DistributedMoment{.beam = c.beam, .moment_per_length = Eigen::Vector3d(0, 0, m),
                                              .frame = frame});
     solvers::solve_static(c.model, {.load_steps = 4});
     const Eigen::Vector3d tip_axis = c.model.state().rotation[c.tip].col(0);

@@ -1,5 +1,5 @@
 // Model structure changes: removing an element.
-#include <spar/core/elements/point_mass_element.hpp>
+#include <spar/elements/rigid_body/point_mass_element.hpp>
 #include <spar/core/model.hpp>
 #include <spar/error.hpp>
 

@@ -1,15 +1,15 @@
 // The hot path of SparsePattern allocates nothing: every global operator new in this test
 // executable is counted, and a batch of add_block and set_zero calls must leave the counter
 // unchanged.
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 
 #include <catch2/catch.hpp>
 
 #include "allocation_counter.hpp"
 
 TEST_CASE("add_block and set_zero do not allocate", "[core][sparse_pattern][allocation]") {
-  using spar::core::PatternBlock;
-  spar::core::SparsePattern pattern(
+  using spar::solvers::PatternBlock;
+  spar::solvers::SparsePattern pattern(
       6, {PatternBlock::element({0, 1, 2, 3}), PatternBlock::coupling({5}, {1, 2})});
   const Eigen::MatrixXd K = Eigen::MatrixXd::Ones(4, 4);
   const Eigen::MatrixXd B = Eigen::MatrixXd::Ones(1, 2);

@@ -1,7 +1,7 @@
 // SparsePattern: its structure and scatter against a dense matrix assembled by hand, Dirichlet
 // conditions, serial against parallel assembly, and the errors it raises.
-#include <spar/core/sparse_assembly.hpp>
-#include <spar/core/work_sharing.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
+#include <spar/solvers/work_sharing.hpp>
 #include <spar/error.hpp>
 
 #include <catch2/catch.hpp>
@@ -12,8 +12,8 @@
 #include <vector>
 
 using namespace spar;
-using core::PatternBlock;
-using core::SparsePattern;
+using solvers::PatternBlock;
+using solvers::SparsePattern;
 
 namespace {
 
@@ -46,7 +46,7 @@ void add_dense(Eigen::MatrixXd& D, const PatternBlock& block, const Eigen::Matri
       D(block.cols[j], block.rows[i]) += K_transpose_position(j, i);
 }
 
-bool same_values(const core::SparseMatrix& A, const core::SparseMatrix& B) {
+bool same_values(const solvers::SparseMatrix& A, const solvers::SparseMatrix& B) {
   return A.nonZeros() == B.nonZeros() &&
          std::equal(A.valuePtr(), A.valuePtr() + A.nonZeros(), B.valuePtr());
 }
@@ -87,14 +87,14 @@ TEST_CASE("SparsePattern holds the diagonal and the blocks' positions, and nothi
         expected(row, col) = 1;
         if (block.with_transpose) expected(col, row) = 1;
       }
-  const core::SparseMatrix& A = pattern.matrix();
+  const solvers::SparseMatrix& A = pattern.matrix();
   CHECK(A.isCompressed());
   CHECK(A.rows() == small_size);
   CHECK(A.cols() == small_size);
   CHECK(pattern.nonzeros() == expected.sum());
   Eigen::MatrixXi stored = Eigen::MatrixXi::Zero(small_size, small_size);
   for (int c = 0; c < small_size; ++c)
-    for (core::SparseMatrix::InnerIterator it(A, c); it; ++it) {
+    for (solvers::SparseMatrix::InnerIterator it(A, c); it; ++it) {
       stored(it.row(), it.col()) = 1;
       CHECK(it.value() == 0.0);
     }
@@ -201,12 +201,12 @@ TEST_CASE("serial and parallel assembly give bitwise identical matrices",
   const BeamChain chain = beam_chain(250, 5);
   SparsePattern serial(chain.size, chain.blocks);
   SparsePattern parallel(chain.size, chain.blocks);
-  const core::BlockCompute compute = [&](int block_id, Eigen::MatrixXd& K) {
+  const solvers::BlockCompute compute = [&](int block_id, Eigen::MatrixXd& K) {
     K = random_block(chain.blocks[block_id], block_id);
   };
-  serial.assemble(compute, core::AssemblyExecution::serial);
+  serial.assemble(compute, solvers::AssemblyExecution::serial);
   for (int repeat = 0; repeat < 3; ++repeat) {
-    parallel.assemble(compute, core::AssemblyExecution::parallel);
+    parallel.assemble(compute, solvers::AssemblyExecution::parallel);
     CHECK(same_values(serial.matrix(), parallel.matrix()));
   }
 
@@ -230,28 +230,28 @@ TEST_CASE("parallel assembly sums repeated dofs and coupling blocks as add_block
   for (int b = 0; b < static_cast<int>(blocks.size()); ++b)
     by_hand.add_block(b, random_block(blocks[b], 10 + b));
   parallel.assemble([&](int b, Eigen::MatrixXd& K) { K = random_block(blocks[b], 10 + b); },
-                    core::AssemblyExecution::parallel);
+                    solvers::AssemblyExecution::parallel);
   CHECK(same_values(by_hand.matrix(), parallel.matrix()));
 }
 
 TEST_CASE("automatic assembly runs in parallel from parallel_assembly_min_blocks blocks up",
           "[core][sparse_pattern][openmp]") {
-  const bool threads = core::WorkSharing::shared().thread_count() > 1;
-  const BeamChain below = beam_chain(core::parallel_assembly_min_blocks - 1, 0);
-  const BeamChain at = beam_chain(core::parallel_assembly_min_blocks, 0);
+  const bool threads = solvers::WorkSharing::shared().thread_count() > 1;
+  const BeamChain below = beam_chain(solvers::parallel_assembly_min_blocks - 1, 0);
+  const BeamChain at = beam_chain(solvers::parallel_assembly_min_blocks, 0);
   const SparsePattern small(below.size, below.blocks);
   const SparsePattern large(at.size, at.blocks);
-  CHECK_FALSE(small.runs_parallel(core::AssemblyExecution::automatic));
-  CHECK(large.runs_parallel(core::AssemblyExecution::automatic) == threads);
-  CHECK(small.runs_parallel(core::AssemblyExecution::parallel) == threads);
-  CHECK_FALSE(large.runs_parallel(core::AssemblyExecution::serial));
+  CHECK_FALSE(small.runs_parallel(solvers::AssemblyExecution::automatic));
+  CHECK(large.runs_parallel(solvers::AssemblyExecution::automatic) == threads);
+  CHECK(small.runs_parallel(solvers::AssemblyExecution::parallel) == threads);
+  CHECK_FALSE(large.runs_parallel(solvers::AssemblyExecution::serial));
 }
 
 TEST_CASE("assemble rethrows a failure of the block computation", "[core][sparse_pattern]") {
   const BeamChain chain = beam_chain(20, 0);
   SparsePattern pattern(chain.size, chain.blocks);
-  const auto execution = GENERATE(core::AssemblyExecution::serial, core::AssemblyExecution::parallel,
-                                  core::AssemblyExecution::automatic);
+  const auto execution = GENERATE(solvers::AssemblyExecution::serial, solvers::AssemblyExecution::parallel,
+                                  solvers::AssemblyExecution::automatic);
   CHECK_THROWS_WITH(pattern.assemble(
                         [](int block_id, Eigen::MatrixXd&) {
                           if (block_id == 7) throw std::runtime_error("element 7 failed");

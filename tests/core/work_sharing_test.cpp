@@ -1,7 +1,7 @@
 // WorkSharing: every index runs exactly once whatever the chunking, per-thread indices stay in
 // range, a body's exception reaches the caller, and a body that calls back in or a job of one
 // chunk runs inline.
-#include <spar/core/work_sharing.hpp>
+#include <spar/solvers/work_sharing.hpp>
 #include <spar/error.hpp>
 
 #include <catch2/catch.hpp>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-using spar::core::WorkSharing;
+using spar::solvers::WorkSharing;
 
 TEST_CASE("for_each_chunk runs every index exactly once", "[core][work_sharing]") {
   const int threads = GENERATE(1, 2, 3);

@@ -6,6 +6,8 @@
 // for every iteration-matrix strategy, with loads of every kind and a time history among them.
 #include <spar/core/model.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -28,11 +30,11 @@ struct Run {
 Run run(solvers::IterationMatrix strategy, double residual_tolerance, int steps) {
   test::FlexiblePendulum pendulum = test::flexible_pendulum(6);
   core::Model& model = pendulum.model;
-  const int tip = model.beam(0).node(model.beam(0).control_point_count() - 1);
-  model.add_load(core::NodalForce{tip, Eigen::Vector3d(0.0, 0.02, 0.05)},
+  const int tip = core::beam(model, 0).node(core::beam(model, 0).control_point_count() - 1);
+  core::add_load(model, core::NodalForce{tip, Eigen::Vector3d(0.0, 0.02, 0.05)},
                  [](double t) { return std::sin(40.0 * t); });
-  model.add_load(core::DistributedForce{0, Eigen::Vector3d(0.0, -0.01, 0.0)});
-  model.add_load(core::NodalMoment{tip, Eigen::Vector3d(0.0, 0.0, 2e-3), core::MomentFrame::inertial});
+  core::add_load(model, core::DistributedForce{0, Eigen::Vector3d(0.0, -0.01, 0.0)});
+  core::add_load(model, core::NodalMoment{tip, Eigen::Vector3d(0.0, 0.0, 2e-3), core::MomentFrame::inertial});
   solvers::GeneralizedAlpha integrator(model, std::move(pendulum.joints),
                                        {.time_step = 1e-3, .iteration_matrix = strategy,
                                         .residual_tolerance = residual_tolerance});

@@ -3,6 +3,7 @@
 #include <spar/error.hpp>
 #include <spar/iga/straight_line.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -14,9 +15,9 @@ TEST_CASE("dynamics: a beam without section inertia is named", "[dynamics]") {
   core::Model model;
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection section = core::CrossSection::rectangle(0.01, 0.01, steel.poisson_ratio);
-  model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 2, 2),
+  core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 2, 2),
                   .stiffness = core::SectionStiffness::from(steel, section)});  // no .inertia
-  model.fix(model.beam(0).node(0), core::Fix::all);
+  model.fix(core::beam(model, 0).node(0), core::Fix::all);
   model.set_gravity(Eigen::Vector3d(0, 0, -9.81));
   solvers::GeneralizedAlpha integrator(model, {}, {.time_step = 1e-3});
   std::string message;

@@ -6,6 +6,7 @@
 // Sizes chosen for a fast suite: 4 cubic elements over 0.5 s for the energy, 2 over 0.2 s for the
 // convergence in h (why 2, see that test). Both reach the pendulum's fast swing.
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -37,7 +38,7 @@ PendulumRun run_pendulum(int elements, double h, long steps, long sample_every, 
                                         .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8});
   integrator.initialize();
   const double initial = integrator.energies().total();
-  const core::GeometricallyExactBeam& rod = p.model.beam(0);
+  const core::GeometricallyExactBeam& rod = core::beam(p.model, 0);
   PendulumRun run;
   run.tip.push_back(rod.position_at(p.model.state(), 1.0));
   for (long n = 1; n <= steps; ++n) {

@@ -1,8 +1,10 @@
 // Inertia of beams and rigid bodies: the gyroscopic tangent against finite differences, the mass
 // matrix against the kinetic energy of rigid motions, and the Chung–Hulbert parameters.
-#include <spar/core/inertia.hpp>
+#include <spar/elements/beam/beam_inertia.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
 #include <spar/core/model.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -28,9 +30,9 @@ core::SectionInertia generic_inertia() {
 
 TEST_CASE("the gyroscopic tangent is the derivative of the gyroscopic force", "[dynamics]") {
   core::Model model;
-  model.add_beam({.centerline = test::straight_centerline(1.0, 2, 3),
+  core::add_beam(model, {.centerline = test::straight_centerline(1.0, 2, 3),
                   .stiffness = test::generic_stiffness(), .inertia = generic_inertia()});
-  const int body = model.add_rigid_body({.mass = 3.0, .inertia = Eigen::Vector3d(0.4, 0.5, 0.7).asDiagonal()});
+  const int body = core::add_rigid_body(model, {.mass = 3.0, .inertia = Eigen::Vector3d(0.4, 0.5, 0.7).asDiagonal()});
   test::RandomRotations random(31);
   // Local velocities: the element's frames one after the other.
   auto check = [&](const core::FrameInertia& inertia) {
@@ -55,8 +57,8 @@ TEST_CASE("the gyroscopic tangent is the derivative of the gyroscopic force", "[
     // The gyroscopic force is quadratic in v: central differences are exact up to round-off.
     CHECK((tangent - fd).norm() <= 1e-8 * tangent.norm());
   };
-  check(core::beam_element_inertia(model.beam(0), 1));
-  check(core::rigid_body_inertia(model.rigid_body(body)));
+  check(core::beam_element_inertia(core::beam(model, 0), 1));
+  check(core::rigid_body_inertia(core::rigid_body(model, body)));
 }
 
 TEST_CASE("the factored inertia products are those of the dense mass matrix", "[dynamics]") {
@@ -64,9 +66,9 @@ TEST_CASE("the factored inertia products are those of the dense mass matrix", "[
   // same sums in another order, equal to round-off. With v = 0 the force is M v̇ alone; with
   // v̇ = 0 it is the gyroscopic force Ω_I × (Σ_J M_IJ^ΩΩ Ω_J), written out here from M's blocks.
   core::Model model;
-  model.add_beam({.centerline = test::straight_centerline(1.0, 3, 3),
+  core::add_beam(model, {.centerline = test::straight_centerline(1.0, 3, 3),
                   .stiffness = test::generic_stiffness(), .inertia = generic_inertia()});
-  const core::FrameInertia inertia = core::beam_element_inertia(model.beam(0), 1);
+  const core::FrameInertia inertia = core::beam_element_inertia(core::beam(model, 0), 1);
   const int k = inertia.frame_count(), n = 6 * k;
   REQUIRE(k == 4);
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n, n);
@@ -99,7 +101,7 @@ TEST_CASE("the beam mass matrix gives the kinetic energy of a translating, spinn
   // A straight beam of length 1.5 translating with u and spinning about its axis with ω:
   // T = ½ ρA L |u|² + ½ ρJ₁₁ L ω².
   core::Model model;
-  const int b = model.add_beam({.centerline = test::straight_centerline(1.5, 4, 2),
+  const int b = core::add_beam(model, {.centerline = test::straight_centerline(1.5, 4, 2),
                                 .stiffness = test::generic_stiffness(), .inertia = generic_inertia()});
   const Eigen::Vector3d u(0.3, -1.2, 0.4);
   const double omega = 2.5;
@@ -109,10 +111,10 @@ TEST_CASE("the beam mass matrix gives the kinetic energy of a translating, spinn
     v(6 * k + 3) = omega;
   }
   double kinetic = 0.0;
-  for (int e = 0; e < model.beam(b).element_count(); ++e) {
-    const int first = model.beam(b).node(model.beam(b).element(e).first_control_point);
-    const Eigen::VectorXd local = v.segment(6 * first, 6 * (model.beam(b).degree() + 1));
-    kinetic += core::beam_element_inertia(model.beam(b), e).kinetic_energy(local);
+  for (int e = 0; e < core::beam(model, b).element_count(); ++e) {
+    const int first = core::beam(model, b).node(core::beam(model, b).element(e).first_control_point);
+    const Eigen::VectorXd local = v.segment(6 * first, 6 * (core::beam(model, b).degree() + 1));
+    kinetic += core::beam_element_inertia(core::beam(model, b), e).kinetic_energy(local);
   }
   const double expected = 0.5 * 2.0 * 1.5 * u.squaredNorm() + 0.5 * 0.3 * 1.5 * omega * omega;
   CHECK(std::fabs(kinetic - expected) <= 1e-14 * expected);
@@ -129,10 +131,10 @@ TEST_CASE("the beam mass matrix gives the kinetic energy of a tumbling beam, any
   const Eigen::Vector3d start(0.2, -0.1, 0.4), a = Eigen::Vector3d(1.0, -2.0, 0.5).normalized();
   const double L = 1.5;
   core::Model model;
-  const int b = model.add_beam({.centerline = iga::straight_line<3>(start, start + L * a, 4, 2),
+  const int b = core::add_beam(model, {.centerline = iga::straight_line<3>(start, start + L * a, 4, 2),
                                 .stiffness = test::generic_stiffness(), .inertia = generic_inertia(),
                                 .section_axis_hint = Eigen::Vector3d(0.3, 0.4, 1.0)});
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   const Eigen::Matrix3d R0 = model.state().rotation[beam.node(0)];
   REQUIRE((R0.col(0) - a).norm() <= 1e-15);
   const Eigen::Vector3d c = start + 0.5 * L * a, u(0.3, -1.2, 0.4), omega(1.1, 2.5, -0.7);

@@ -5,6 +5,7 @@
 #include <spar/iga/straight_line.hpp>
 #include <spar/joints/spherical_joint.hpp>
 #include <spar/solvers/modal_analysis.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -21,7 +22,7 @@ constexpr double length = 1.0;
 /// A steel beam along X from the origin, `elements` cubic elements, section width × height.
 int add_beam(core::Model& model, int elements, double width, double height) {
   const core::CrossSection section = core::CrossSection::rectangle(width, height, steel.poisson_ratio);
-  return model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0),
+  return core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0),
                                                              elements, 3),
                          .stiffness = core::SectionStiffness::from(steel, section),
                          .inertia = core::SectionInertia::from(steel, section)});
@@ -52,7 +53,7 @@ TEST_CASE("modal analysis: a pinned-pinned beam held by joints has the Timoshenk
   // the 1e-6 asked. 64 cubic elements: the discretization error of mode 3 is ~(3π/64)⁶ ≈ 1e-8.
   core::Model model;
   const int b = add_beam(model, 64, 0.02, 0.01);
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   const core::Configuration& q = model.state();
   std::vector<std::unique_ptr<joints::Constraint>> owned;
   owned.push_back(std::make_unique<joints::SphericalJoint>(joints::Attachment{beam.node(0)}, joints::Attachment{-1},
@@ -90,7 +91,7 @@ TEST_CASE("modal analysis: a slender clamped cantilever has Euler-Bernoulli's fr
   // is ½). So: below Euler–Bernoulli, by less than that estimate.
   core::Model model;
   const int b = add_beam(model, 64, 0.005, 0.005);
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   model.fix(beam.node(0));
   const solvers::Modes modes = solvers::modal_analysis(model, {}, {.modes = 8});
   const double EI = beam.stiffness().bending_2, rhoA = beam.inertia().mass_per_length;

@@ -3,9 +3,12 @@
 // stop and running off; a mass sliding freely along a curved flexible carrier conserving energy
 // to O(h²), smoothly across elements of a C¹ carrier and with jolts on a C⁰ one.
 #include <spar/core/model.hpp>
+#include <spar/elements/beam/beam_centerline.hpp>
 #include <spar/error.hpp>
 #include <spar/joints/sliding_joint.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -49,17 +52,17 @@ const Eigen::Vector3d rail_direction(std::cos(incline), 0.0, -std::sin(incline))
 
 /// A bead (rigid body of 0.5 kg at the rail point ζ₀) on the rail, gravity along −Z.
 void build_bead_on_rail(SlidingRun& run, double zeta0, std::optional<double> upper_stop, double h) {
-  const int carrier = run.model.add_beam(
+  const int carrier = core::add_beam(run.model, 
       {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), rail_length * rail_direction, 4, 2),
        .stiffness = test::generic_stiffness()});
-  for (int I = 0; I < run.model.beam(carrier).control_point_count(); ++I)
-    run.model.fix(run.model.beam(carrier).node(I));
-  run.bead = run.model.rigid_body(run.model.add_rigid_body(
+  for (int I = 0; I < core::beam(run.model, carrier).control_point_count(); ++I)
+    run.model.fix(core::beam(run.model, carrier).node(I));
+  run.bead = core::rigid_body(run.model, core::add_rigid_body(run.model, 
       {.center_of_mass = zeta0 * rail_direction, .mass = bead_mass,
        .inertia = 1e-3 * Eigen::Matrix3d::Identity()})).node;
   run.model.set_gravity(Eigen::Vector3d(0, 0, -g));
   auto joint = std::make_unique<joints::SlidingJoint>(
-      joints::SlidingJointParameters{.slider = {.node = run.bead}, .carrier = carrier, .zeta = zeta0,
+      joints::SlidingJointParameters{.slider = {.node = run.bead}, .carrier = core::beam_centerline(run.model, carrier), .zeta = zeta0,
                                      .upper_stop = upper_stop, .name = "bead"},
       run.model);
   run.joint = joint.get();
@@ -187,16 +190,16 @@ void build_free_slide(FreeSlide& f, int continuity, double h, double rho) {
   SlidingRun& run = f.run;
   const core::Material material{.young_modulus = 2e8, .poisson_ratio = 0.3, .density = 800};
   const core::CrossSection section = core::CrossSection::rectangle(0.02, 0.02, material.poisson_ratio);
-  const int carrier = run.model.add_beam({.centerline = test::quarter_circle_carrier(1.0, 4, 2, continuity),
+  const int carrier = core::add_beam(run.model, {.centerline = test::quarter_circle_carrier(1.0, 4, 2, continuity),
                                           .stiffness = core::SectionStiffness::from(material, section),
                                           .inertia = core::SectionInertia::from(material, section)});
-  run.model.fix(run.model.beam(carrier).node(0));
+  run.model.fix(core::beam(run.model, carrier).node(0));
   const double zeta0 = 0.2;
   const Eigen::Vector3d start(std::cos(zeta0), std::sin(zeta0), 0.0);
-  run.bead = run.model.rigid_body(run.model.add_rigid_body(
+  run.bead = core::rigid_body(run.model, core::add_rigid_body(run.model, 
       {.center_of_mass = start, .mass = 0.1, .inertia = 1e-4 * Eigen::Matrix3d::Identity()})).node;
   auto joint = std::make_unique<joints::SlidingJoint>(
-      joints::SlidingJointParameters{.slider = {.node = run.bead}, .carrier = carrier, .zeta = zeta0, .name = "mass"},
+      joints::SlidingJointParameters{.slider = {.node = run.bead}, .carrier = core::beam_centerline(run.model, carrier), .zeta = zeta0, .name = "mass"},
       run.model);
   run.joint = joint.get();
   // ζ₀ = 0.2 m is on the arc up to the rational parameterization: place the mass on x_B(ζ₀).

@@ -5,9 +5,12 @@
 // statics, an ANCF beam without a section. A static load too large for the model ends in an error
 // that says so, and leaves the state of the last converged load factor.
 #include <spar/core/core.hpp>
+#include <spar/elements/elements.hpp>
 #include <spar/iga/iga.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -156,7 +159,7 @@ TEST_CASE("every bad API input of issue 29's audit ends in a spar::Error naming 
       {"a NaN load history in statics (ignored)",
        [] {
          test::Cantilever c = steel_cantilever();
-         c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
+         core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
                           [](double) { return not_a_number; });
          solvers::solve_static(c.model);
        },
@@ -183,7 +186,7 @@ TEST_CASE("a static load too large for the model is refused in its words, the st
   for (const double force : {1e200, 1e250, 1e300}) {
     INFO("tip force " << force << " N");
     test::Cantilever c = steel_cantilever();
-    c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, force, 0)});
+    core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, force, 0)});
     const core::Configuration initial = c.model.state();
     try {
       solvers::solve_static(c.model, {.max_cutbacks = 3});
@@ -203,7 +206,7 @@ TEST_CASE("a NaN load history in statics stops the solve at once, the state rest
   // The dynamic path refuses it at its first evaluation (api_input_test.cpp); statics scales
   // the load by the load factor alone and never looked at the history.
   test::Cantilever c = steel_cantilever();
-  c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
+  core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
                    [](double t) { return t == 0.0 ? not_a_number : 1.0; });
   const core::Configuration initial = c.model.state();
   try {
@@ -222,7 +225,7 @@ TEST_CASE("a static solve accepts the round-off its own rotation updates leave",
   // as the square root of the count). R (1 + e) has |R^T R - I| = 2 sqrt(3) e to first order.
   const auto solve_with_scaled_tip = [](double e) {
     test::Cantilever c = steel_cantilever();
-    c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)});
+    core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)});
     c.model.state().rotation[c.tip] *= 1.0 + e;
     solvers::solve_static(c.model);
   };
@@ -236,7 +239,7 @@ TEST_CASE("GeneralizedAlpha: step() before initialize() initializes; a second in
   // runs rely on it): it must be the same run, bit for bit, as initialize() then step().
   const auto tip_after_steps = [](bool initialize_first) {
     test::Cantilever c = steel_cantilever();
-    c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)});
+    core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)});
     solvers::GeneralizedAlpha integrator(c.model, {}, {.time_step = 1e-3});
     if (initialize_first) integrator.initialize();
     for (int n = 0; n < 3; ++n) integrator.step();

@@ -3,11 +3,16 @@
 // hangs (100 000 Gauss points), std::bad_alloc (2^31 elements) and silent NaN (a NaN point,
 // Poisson ratio, load history, tolerance, results scalar, matrix) are all among them.
 #include <spar/core/core.hpp>
+#include <spar/elements/elements.hpp>
+#include <spar/output/output.hpp>
 #include <spar/iga/iga.hpp>
 #include <spar/joints/joints.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/solvers/linear_solver.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -52,7 +57,7 @@ void evaluate_element(const std::function<void(core::ElementInput&)>& change) {
 /// A few dynamic steps of the cantilever under `options` with a tip force of the given history.
 void run_dynamics(const solvers::DynamicOptions& options, core::LoadHistory history = {}) {
   test::Cantilever c = steel_cantilever();
-  c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)}, std::move(history));
+  core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)}, std::move(history));
   solvers::GeneralizedAlpha integrator(c.model, {}, options);
   integrator.initialize();
   for (int i = 0; i < 3; ++i) integrator.step();
@@ -63,17 +68,17 @@ void run_dynamics(const solvers::DynamicOptions& options, core::LoadHistory hist
 TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[input]") {
   const std::vector<test::ErrorCase> cases = {
       {"position_at with an empty configuration (SIGSEGV)",
-       [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).position_at(core::Configuration{}, 0.5); }, "frame nodes"},
+       [] { test::Cantilever c = steel_cantilever(); core::beam(c.model, c.beam).position_at(core::Configuration{}, 0.5); }, "frame nodes"},
       {"rotation_at with an empty configuration",
-       [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).rotation_at(core::Configuration{}, 0.5); }, "frame nodes"},
+       [] { test::Cantilever c = steel_cantilever(); core::beam(c.model, c.beam).rotation_at(core::Configuration{}, 0.5); }, "frame nodes"},
       {"sample_centerline with an empty configuration",
-       [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).sample_centerline(core::Configuration{}, 3); }, "frame nodes"},
+       [] { test::Cantilever c = steel_cantilever(); core::beam(c.model, c.beam).sample_centerline(core::Configuration{}, 3); }, "frame nodes"},
       {"beam element 99 (read out of bounds)",
-       [] { test::Cantilever c = steel_cantilever(); c.model.beam(c.beam).element(99); }, "element 99 does not exist"},
+       [] { test::Cantilever c = steel_cantilever(); core::beam(c.model, c.beam).element(99); }, "element 99 does not exist"},
       {"100 000 Gauss points (hung)",
        [] {
          core::Model model;
-         model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 1, 3),
+         core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 1, 3),
                          .stiffness = core::SectionStiffness::from({.young_modulus = 1e9, .poisson_ratio = 0.3},
                                                                    core::CrossSection::circle(0.01, 0.3)),
                          .quadrature_points = 100000});
@@ -84,14 +89,14 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
        [] { iga::KnotVector::open_uniform(2147483647, 1, 0); }, "elements"},
       {"open_uniform of degree 2^31 - 1", [] { iga::KnotVector::open_uniform(1, 2147483647, 0); }, "degree"},
       {"a rigid body with a NaN centre of mass",
-       [] { core::Model m; auto p = top(); p.center_of_mass.x() = not_a_number; m.add_rigid_body(p); }, "centre of mass"},
+       [] { core::Model m; auto p = top(); p.center_of_mass.x() = not_a_number; core::add_rigid_body(m, p); }, "centre of mass"},
       {"a rigid body with an infinite centre of mass",
-       [] { core::Model m; auto p = top(); p.center_of_mass.y() = infinite; m.add_rigid_body(p); }, "centre of mass"},
+       [] { core::Model m; auto p = top(); p.center_of_mass.y() = infinite; core::add_rigid_body(m, p); }, "centre of mass"},
       {"an inertia diag(1, 1, 5) that breaks the triangle inequality",
-       [] { core::Model m; auto p = top(); p.inertia = Eigen::Vector3d(1, 1, 5).asDiagonal(); m.add_rigid_body(p); },
+       [] { core::Model m; auto p = top(); p.inertia = Eigen::Vector3d(1, 1, 5).asDiagonal(); core::add_rigid_body(m, p); },
        "triangle inequality"},
       {"an inertia with I3 = -1e-9 prints its value",
-       [] { core::Model m; auto p = top(); p.inertia = Eigen::Vector3d(1, 1, -1e-9).asDiagonal(); m.add_rigid_body(p); },
+       [] { core::Model m; auto p = top(); p.inertia = Eigen::Vector3d(1, 1, -1e-9).asDiagonal(); core::add_rigid_body(m, p); },
        "positive definite"},
       {"attach_at a NaN point",
        [] { test::Cantilever c = steel_cantilever(); joints::attach_at(c.tip, Eigen::Vector3d(not_a_number, 0, 0), c.model.state()); }, "attachment point"},
@@ -113,12 +118,12 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
        "Poisson"},
       {"Poisson's ratio NaN in CrossSection::circle", [] { core::CrossSection::circle(0.01, not_a_number); }, "Poisson"},
       {"a NaN force in add_load",
-       [] { test::Cantilever c = steel_cantilever(); c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(not_a_number, 0, 0)}); },
+       [] { test::Cantilever c = steel_cantilever(); core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(not_a_number, 0, 0)}); },
        "force"},
       {"a NaN follower moment",
        [] {
          test::Cantilever c = steel_cantilever();
-         c.model.add_load(core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, not_a_number),
+         core::add_load(c.model, core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, not_a_number),
                                             .frame = core::MomentFrame::material});
        },
        "moment"},
@@ -211,7 +216,7 @@ TEST_CASE("every bad API input of the audit ends in a spar::Error naming it", "[
          auto p = top();
          p.mass = 1e300;
          p.center_of_mass.z() = -1e300;
-         m.fix(m.rigid_body(m.add_rigid_body(p)).node);
+         m.fix(core::rigid_body(m, core::add_rigid_body(m, p)).node);
          m.set_gravity(Eigen::Vector3d(0, 0, -9.81));
          solvers::GeneralizedAlpha(m, {}, {}).initialize();
        },
@@ -248,13 +253,13 @@ TEST_CASE("every linear solver refuses a NaN matrix and names the entry", "[inpu
 TEST_CASE("ResultsWriter refuses a NaN scalar unless it is declared may_be_undefined", "[input]") {
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / ("spar_input_results_" + std::to_string(getpid()) + ".h5");
-  core::ResultsLayout layout;
+  output::ResultsLayout layout;
   layout.velocities = false;
   layout.scalars = {{.name = "energy", .unit = "J", .description = "energy"},
                     {.name = "material_coordinate", .unit = "m", .description = "undefined once released",
                      .may_be_undefined = true}};
   {
-    core::ResultsWriter writer(file.string(), layout);
+    output::ResultsWriter writer(file.string(), layout);
     writer.append({.time = 0.0, .scalars = {1.0, not_a_number}});  // NaN where declared: accepted
     CHECK_THROWS_WITH(writer.append({.time = 1.0, .scalars = {not_a_number, 0.0}}), Catch::Contains("(energy) = nan"));
     CHECK_THROWS_WITH(writer.append({.time = 1.0, .scalars = {1.0, infinite}}), Catch::Contains("is not finite"));
@@ -267,7 +272,7 @@ TEST_CASE("a NaN load history stops the run at its first evaluation, without cut
   // Before: the history's error was taken for a Newton failure, the step was halved 8 times and
   // the final message advised reducing the time step.
   test::Cantilever c = steel_cantilever();
-  c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
+  core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0, 10, 0)},
                    [](double t) { return t > 0.0015 ? not_a_number : 1.0; });
   solvers::GeneralizedAlpha integrator(c.model, {}, {});
   integrator.initialize();

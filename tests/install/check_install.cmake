@@ -1,5 +1,5 @@
-# Script mode: install spar from SPAR_BUILD_DIR into WORK_DIR/prefix, build the driver in
-# DRIVER_SOURCE_DIR against it, and run the driver. Any failing step fails the test.
+# Script mode: install spar from SPAR_BUILD_DIR into WORK_DIR/prefix, build the outside project in
+# OUTSIDE_SOURCE_DIR against it, and run its executable EXECUTABLE. Any failing step fails the test.
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 
@@ -12,7 +12,7 @@ function(run_step)
 endfunction()
 
 run_step(${CMAKE_COMMAND} --install ${SPAR_BUILD_DIR} --prefix ${prefix})
-run_step(${CMAKE_COMMAND} -S ${DRIVER_SOURCE_DIR} -B ${WORK_DIR}/build
+run_step(${CMAKE_COMMAND} -S ${OUTSIDE_SOURCE_DIR} -B ${WORK_DIR}/build
          -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
 run_step(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
-run_step(${WORK_DIR}/build/driver)
+run_step(${WORK_DIR}/build/${EXECUTABLE})

@@ -1,6 +1,7 @@
 // The joints' evaluation functions allocate nothing: every global operator new in this test
 // executable is counted, and a batch of value/jacobian/multiplier_tangent/acceleration_terms/
 // time_derivative calls on every joint must leave the counter unchanged.
+#include <spar/elements/beam/beam_centerline.hpp>
 #include <spar/joints/joints.hpp>
 
 #include <catch2/catch.hpp>
@@ -9,6 +10,7 @@
 
 #include <spar/core/model.hpp>
 #include <spar/iga/straight_line.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <array>
 #include <cmath>
@@ -35,10 +37,10 @@ TEST_CASE("joint evaluations do not allocate", "[joints][allocation]") {
                                                                 &prismatic, &position, &angle};
   // The sliding joint, on a carrier of 4 quadratic elements, locked (4 equations).
   core::Model model;
-  model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 0, 0), 4, 2),
+  core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 0, 0), 4, 2),
                   .stiffness = {.axial = 1, .shear_2 = 1, .shear_3 = 1, .torsion = 1, .bending_2 = 1, .bending_3 = 1}});
   const int slider = model.add_frame(Eigen::Vector3d(1.1, 0, 0), Eigen::Matrix3d::Identity());
-  joints::SlidingJoint sliding({.slider = {.node = slider}, .carrier = 0, .zeta = 1.1, .upper_stop = 1.5}, model);
+  joints::SlidingJoint sliding({.slider = {.node = slider}, .carrier = core::beam_centerline(model, 0), .zeta = 1.1, .upper_stop = 1.5}, model);
   core::Configuration q_sliding = model.state();
   q_sliding.vector(sliding.zeta_block())(0) = 1.6;
   std::string description;

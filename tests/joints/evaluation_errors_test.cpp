@@ -1,6 +1,7 @@
-// Every joint checks what it is evaluated on: a configuration that lacks its nodes, outputs that
-// are not sized m, m×6k and 6k×6k, multipliers or velocities of the wrong size all raise
-// spar::Error naming the joint and the mismatch.
+// Every joint checks what it is evaluated on (the Constraint interface does, for all of them: see
+// also constraint_boundary_test.cpp): a configuration that lacks its nodes, outputs that are not
+// sized m, m×n and n×n (n = 6 per frame node here), multipliers or velocities of the wrong size all
+// raise spar::Error naming the joint and the mismatch.
 #include <spar/error.hpp>
 #include <spar/joints/spherical_joint.hpp>
 

@@ -3,10 +3,12 @@
 // elements, next to knots, beyond a stopped end, locked), the window of control points that
 // follows ζ, the end stops and the errors.
 #include <spar/core/model.hpp>
+#include <spar/elements/beam/beam_centerline.hpp>
 #include <spar/error.hpp>
 #include <spar/joints/sliding_joint.hpp>
 #include <spar/lie/exp.hpp>
 #include <spar/iga/straight_line.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <Eigen/SVD>
 
@@ -26,14 +28,14 @@ struct SlidingFixture {
   int slider = -1;
 
   SlidingFixture(int degree, int continuity) {
-    model.add_beam({.centerline = test::quarter_circle_carrier(1.5, 5, degree, continuity),
+    core::add_beam(model, {.centerline = test::quarter_circle_carrier(1.5, 5, degree, continuity),
                     .stiffness = test::generic_stiffness()});
     slider = model.add_frame(Eigen::Vector3d(0.3, -0.2, 0.5), lie::exp(Eigen::Vector3d(0.3, 0.2, -0.4)));
   }
 
   joints::SlidingJointParameters parameters(double zeta) const {
     return {.slider = {.node = slider, .offset = Eigen::Vector3d(0.1, -0.2, 0.15)},
-            .carrier = 0, .zeta = zeta, .upper_stop = std::nullopt, .name = "test slider"};
+            .carrier = core::beam_centerline(model, 0), .zeta = zeta, .upper_stop = std::nullopt, .name = "test slider"};
   }
 };
 
@@ -196,7 +198,8 @@ TEST_CASE("sliding joint rejects a missing carrier, a slider on the carrier, and
           "[joints][sliding][errors]") {
   SlidingFixture f(2, 1);
   joints::SlidingJointParameters p = f.parameters(0.5);
-  p.carrier = 1;
+  CHECK_THROWS(p.carrier = core::beam_centerline(f.model, 1));
+  p.carrier = nullptr;
   CHECK_THROWS(joints::SlidingJoint(p, f.model));
   p = f.parameters(0.5);
   p.slider.node = 2;
@@ -233,10 +236,10 @@ TEST_CASE("sliding joint: zeta in metres keeps the start-up matrix's conditionin
   std::vector<double> conditions;
   for (const double length : {0.02, 2.0, 200.0}) {
     core::Model model;
-    model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), length * Eigen::Vector3d(0.6, 0, -0.8), 5, 2),
+    core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), length * Eigen::Vector3d(0.6, 0, -0.8), 5, 2),
                     .stiffness = test::generic_stiffness()});
     const int bead = model.add_frame(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-    const joints::SlidingJoint joint({.slider = {.node = bead}, .carrier = 0, .zeta = 0.3 * length}, model);
+    const joints::SlidingJoint joint({.slider = {.node = bead}, .carrier = core::beam_centerline(model, 0), .zeta = 0.3 * length}, model);
     const Eigen::MatrixXd B = test::jacobian(joint, model.state(), 0);
     CHECK(std::abs(B.col(6).norm() - 1.0) <= 1e-12);
     Eigen::MatrixXd S = Eigen::MatrixXd::Zero(7, 7);
@@ -262,7 +265,7 @@ TEST_CASE("sliding joint: a carrier 100 m from the origin behaves as the same on
   const Eigen::Vector3d offset(100.0, -40.0, 30.0);
   const iga::NurbsCurve<3> arc = test::quarter_circle_carrier(1.5, 10, 2, 1);
   const auto placed = [&](const Eigen::Vector3d& shift, core::Model& model) {
-    model.add_beam({.centerline = iga::NurbsCurve<3>(arc.knots(), arc.control_points().colwise() + shift,
+    core::add_beam(model, {.centerline = iga::NurbsCurve<3>(arc.knots(), arc.control_points().colwise() + shift,
                                                      arc.weights()),
                     .stiffness = test::generic_stiffness()});
     return model.add_frame(shift + Eigen::Vector3d(0.3, -0.2, 0.5), lie::exp(Eigen::Vector3d(0.3, 0.2, -0.4)));
@@ -270,9 +273,11 @@ TEST_CASE("sliding joint: a carrier 100 m from the origin behaves as the same on
   core::Model near_model, far_model;
   const int slider = placed(Eigen::Vector3d::Zero(), near_model);
   REQUIRE(placed(offset, far_model) == slider);
-  const joints::SlidingJointParameters p{.slider = {.node = slider, .offset = Eigen::Vector3d(0.1, -0.2, 0.15)},
-                                         .carrier = 0, .zeta = 0.8, .name = "test slider"};
-  joints::SlidingJoint near(p, near_model), far(p, far_model);
+  joints::SlidingJointParameters p{.slider = {.node = slider, .offset = Eigen::Vector3d(0.1, -0.2, 0.15)},
+                                   .carrier = core::beam_centerline(near_model, 0), .zeta = 0.8, .name = "test slider"};
+  joints::SlidingJoint near(p, near_model);
+  p.carrier = core::beam_centerline(far_model, 0);
+  joints::SlidingJoint far(p, far_model);
   // Moving the control points by 100 m rounds them by ≤ √3/2 ulp(100) = 1.2e-14 m, which changes
   // the length by ≤ (π/2 + 2) · 1.2e-14 m; each length is computed to 1e-14: 1e-13 relative.
   CHECK(std::abs(far.carrier_length() - near.carrier_length()) <= 1e-13 * near.carrier_length());

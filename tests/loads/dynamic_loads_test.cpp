@@ -5,6 +5,9 @@
 // NodalForce and DistributedForce silently: every test here would have failed.
 #include <spar/error.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -41,10 +44,10 @@ struct Beam {
 /// The test::make_cantilever beam (L = 1, cubic elements) with steel inertia, clamped or free.
 Beam steel_beam(int elements, bool clamped) {
   Beam b;
-  b.beam = b.model.add_beam({.centerline = test::straight_centerline(L, elements, 3),
+  b.beam = core::add_beam(b.model, {.centerline = test::straight_centerline(L, elements, 3),
                              .stiffness = test::cantilever_stiffness(), .inertia = steel_inertia()});
-  b.root = b.model.beam(b.beam).node(0);
-  b.tip = b.model.beam(b.beam).node(b.model.beam(b.beam).control_point_count() - 1);
+  b.root = core::beam(b.model, b.beam).node(0);
+  b.tip = core::beam(b.model, b.beam).node(core::beam(b.model, b.beam).control_point_count() - 1);
   if (clamped) b.model.fix(b.root);
   return b;
 }
@@ -63,21 +66,21 @@ std::vector<LoadCase> small_loads() {
   const double F = 1e-3 * EI / (L * L), q = 1e-3 * EI / (L * L * L), M = 1e-3 * EI / L, m = 1e-3 * EI / (L * L);
   const double rhoA = steel_inertia().mass_per_length, g = q / rhoA;
   std::vector<LoadCase> cases = {
-      {"nodal force", [F](Beam& b) { b.model.add_load(core::NodalForce{b.tip, Eigen::Vector3d(0, F, 0)}); },
+      {"nodal force", [F](Beam& b) { core::add_load(b.model, core::NodalForce{b.tip, Eigen::Vector3d(0, F, 0)}); },
        F * L * L * L / (3 * EI) + F * L / GA},
       {"distributed force",
-       [q](Beam& b) { b.model.add_load(core::DistributedForce{b.beam, Eigen::Vector3d(0, q, 0)}); },
+       [q](Beam& b) { core::add_load(b.model, core::DistributedForce{b.beam, Eigen::Vector3d(0, q, 0)}); },
        q * std::pow(L, 4) / (8 * EI) + q * L * L / (2 * GA)},
       {"gravity", [g](Beam& b) { b.model.set_gravity(Eigen::Vector3d(0, g, 0)); },
        q * std::pow(L, 4) / (8 * EI) + q * L * L / (2 * GA)}};
   for (core::MomentFrame frame : {core::MomentFrame::material, core::MomentFrame::inertial}) {
     const std::string which = frame == core::MomentFrame::material ? " (material)" : " (inertial)";
     cases.push_back({"nodal moment" + which,
-                     [M, frame](Beam& b) { b.model.add_load(core::NodalMoment{b.tip, Eigen::Vector3d(0, 0, M), frame}); },
+                     [M, frame](Beam& b) { core::add_load(b.model, core::NodalMoment{b.tip, Eigen::Vector3d(0, 0, M), frame}); },
                      M * L * L / (2 * EI)});
     cases.push_back({"distributed moment" + which,
                      [m, frame](Beam& b) {
-                       b.model.add_load(core::DistributedMoment{b.beam, Eigen::Vector3d(0, 0, m), frame});
+                       core::add_load(b.model, core::DistributedMoment{b.beam, Eigen::Vector3d(0, 0, m), frame});
                      },
                      m * std::pow(L, 3) / (3 * EI)});
   }
@@ -136,8 +139,8 @@ TEST_CASE("dynamics: forces and gravity change a free beam's linear momentum by 
   };
   const double rhoA = steel_inertia().mass_per_length;
   const Case cases[] = {
-      {"nodal force", [&](Beam& b) { b.model.add_load(core::NodalForce{b.tip, total_force * direction}); }},
-      {"distributed force", [&](Beam& b) { b.model.add_load(core::DistributedForce{b.beam, q * direction}); }},
+      {"nodal force", [&](Beam& b) { core::add_load(b.model, core::NodalForce{b.tip, total_force * direction}); }},
+      {"distributed force", [&](Beam& b) { core::add_load(b.model, core::DistributedForce{b.beam, q * direction}); }},
       {"gravity", [&](Beam& b) { b.model.set_gravity(q / rhoA * direction); }}};
   for (const Case& load : cases) {
     Beam b = steel_beam(4, false);
@@ -170,9 +173,9 @@ TEST_CASE("dynamics: moments change a free body's angular momentum by their angu
   const Eigen::Vector3d M(0.5, -0.2, 1.0);
   for (core::MomentFrame frame : {core::MomentFrame::material, core::MomentFrame::inertial}) {
     core::Model model;
-    const int node = model.rigid_body(model.add_rigid_body(
+    const int node = core::rigid_body(model, core::add_rigid_body(model, 
         {.mass = 1.0, .inertia = Eigen::Vector3d(1, 2, 3).asDiagonal()})).node;
-    model.add_load(core::NodalMoment{node, M, frame});
+    core::add_load(model, core::NodalMoment{node, M, frame});
     const double h = 1e-3;
     solvers::GeneralizedAlpha integrator(model, {},
                                          {.time_step = h, .spectral_radius = 0.8, .tolerance = 1e-20,
@@ -209,7 +212,7 @@ TEST_CASE("dynamics: a distributed moment changes a free beam's angular momentum
   const Eigen::Vector3d m(0.4, -1.0, 2.0);
   for (core::MomentFrame frame : {core::MomentFrame::inertial, core::MomentFrame::material}) {
     Beam b = steel_beam(4, false);
-    b.model.add_load(core::DistributedMoment{b.beam, m, frame});
+    core::add_load(b.model, core::DistributedMoment{b.beam, m, frame});
     const double h = 1e-4;
     solvers::GeneralizedAlpha integrator(b.model, {},
                                          {.time_step = h, .spectral_radius = 0.8, .tolerance = 1e-20,
@@ -220,7 +223,7 @@ TEST_CASE("dynamics: a distributed moment changes a free beam's angular momentum
     integrator.initialize();
     const auto moment_rate = [&]() -> Eigen::Vector3d {
       if (frame == core::MomentFrame::inertial) return m * L;
-      const core::GeometricallyExactBeam& beam = b.model.beam(b.beam);
+      const core::GeometricallyExactBeam& beam = core::beam(b.model, b.beam);
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
       const int intervals = 64;
       for (int i = 0; i <= intervals; ++i) {
@@ -250,11 +253,11 @@ TEST_CASE("add_load refuses a load that is not finite and leaves the model as it
   Beam b = steel_beam(2, true);
   const int elements = b.model.element_count();
   const double nan = std::nan("");
-  CHECK_THROWS_AS(b.model.add_load(core::NodalForce{b.tip, Eigen::Vector3d(0, nan, 0)}), Error);
-  CHECK_THROWS_AS(b.model.add_load(core::NodalMoment{b.tip, Eigen::Vector3d(nan, 0, 0)}), Error);
-  CHECK_THROWS_AS(b.model.add_load(core::DistributedForce{b.beam, Eigen::Vector3d(0, 0, INFINITY)}), Error);
-  CHECK_THROWS_AS(b.model.add_load(core::DistributedMoment{b.beam, Eigen::Vector3d(0, nan, 0)}), Error);
-  CHECK(b.model.load_count() == 0);
+  CHECK_THROWS_AS(core::add_load(b.model, core::NodalForce{b.tip, Eigen::Vector3d(0, nan, 0)}), Error);
+  CHECK_THROWS_AS(core::add_load(b.model, core::NodalMoment{b.tip, Eigen::Vector3d(nan, 0, 0)}), Error);
+  CHECK_THROWS_AS(core::add_load(b.model, core::DistributedForce{b.beam, Eigen::Vector3d(0, 0, INFINITY)}), Error);
+  CHECK_THROWS_AS(core::add_load(b.model, core::DistributedMoment{b.beam, Eigen::Vector3d(0, nan, 0)}), Error);
+  CHECK(core::load_count(b.model) == 0);
   CHECK(b.model.element_count() == elements);
 }
 
@@ -271,7 +274,7 @@ struct TipMomentRun {
 TipMomentRun tip_moment_run(core::MomentFrame frame, core::LoadHistory history, double h, double t_end,
                             double rho = 0.9) {
   Beam b = steel_beam(16, true);
-  b.model.add_load(core::NodalMoment{b.tip, Eigen::Vector3d(0, 0, EI / L), frame}, std::move(history));
+  core::add_load(b.model, core::NodalMoment{b.tip, Eigen::Vector3d(0, 0, EI / L), frame}, std::move(history));
   solvers::GeneralizedAlpha integrator(b.model, {}, {.time_step = h, .spectral_radius = rho});
   while (integrator.time() < t_end - 0.5 * h) integrator.step();
   return {integrator.energies(), integrator.counters(), b.model.state().position[b.tip]};
@@ -346,8 +349,8 @@ TEST_CASE("dynamics: a force with a load history f(t) = sin(w t) moves a free bo
   std::vector<double> velocity_errors, position_errors;
   for (const double h : {1e-2, 5e-3}) {
     core::Model model;
-    const int node = model.rigid_body(model.add_rigid_body({.mass = m, .inertia = Eigen::Matrix3d::Identity()})).node;
-    model.add_load(core::NodalForce{node, F0}, history);
+    const int node = core::rigid_body(model, core::add_rigid_body(model, {.mass = m, .inertia = Eigen::Matrix3d::Identity()})).node;
+    core::add_load(model, core::NodalForce{node, F0}, history);
     solvers::GeneralizedAlpha integrator(model, {}, {.time_step = h, .tolerance = 1e-20, .residual_tolerance = 1e-12});
     while (integrator.time() < T - 0.5 * h) integrator.step();
     const double t = integrator.time();

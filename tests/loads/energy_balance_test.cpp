@@ -3,6 +3,8 @@
 // A conservative model at ρ∞ = 1 dissipates nothing to the integrator's accuracy and receives no
 // external work; a pushed rigid body receives exactly its kinetic energy.
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/elements/loads/loads.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -47,10 +49,10 @@ TEST_CASE("energy balance: a constant force on a free rigid body does work equal
   // generalized-α keeps only to O(h²): ΔKE = external_work to (|Ω| h)²/12 of the rotational
   // energy, 1e-7 J at h = 1e-3 (measured 4.1e-9 J); so is numerical_dissipation.
   core::Model model;
-  const int node = model.rigid_body(model.add_rigid_body(
+  const int node = core::rigid_body(model, core::add_rigid_body(model, 
       {.mass = 2.0, .inertia = Eigen::Vector3d(1, 2, 3).asDiagonal()})).node;
   const Eigen::Vector3d F(3.0, -1.0, 2.0), Omega(0.3, 1.0, 0.2);
-  model.add_load(core::NodalForce{node, F});
+  core::add_load(model, core::NodalForce{node, F});
   const double h = 1e-3;
   solvers::GeneralizedAlpha integrator(model, {},
                                        {.time_step = h, .spectral_radius = 0.8, .tolerance = 1e-20,

@@ -5,6 +5,8 @@
 // gravity.
 #include <spar/lie/lie.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -63,7 +65,7 @@ TEST_CASE("statics: a dead tip force 3EI/L^2 bends the cantilever as Reissner's 
           "[loads][validation]") {
   const Eigen::Vector2d F(0.0, 3 * EI / (L * L));
   const test::Cantilever c = solved_cantilever([&](test::Cantilever& c) {
-    c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(F.x(), F.y(), 0.0)});
+    core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(F.x(), F.y(), 0.0)});
   });
   const test::PlanarRodTip reference = test::solve_planar_rod({.length = L, .tip_force = F});
   INFO("tip " << tip_xy(c).transpose() << ", reference " << reference.position.transpose());
@@ -75,7 +77,7 @@ TEST_CASE("statics: a dead distributed force 8EI/L^3 bends the cantilever as Rei
           "[loads][validation]") {
   const Eigen::Vector2d f(0.0, 8 * EI / (L * L * L));
   const test::Cantilever c = solved_cantilever([&](test::Cantilever& c) {
-    c.model.add_load(core::DistributedForce{.beam = c.beam, .force_per_length = Eigen::Vector3d(f.x(), f.y(), 0.0)});
+    core::add_load(c.model, core::DistributedForce{.beam = c.beam, .force_per_length = Eigen::Vector3d(f.x(), f.y(), 0.0)});
   });
   const test::PlanarRodTip reference = test::solve_planar_rod({.length = L, .force_per_length = f});
   INFO("tip " << tip_xy(c).transpose() << ", reference " << reference.position.transpose());
@@ -92,7 +94,7 @@ TEST_CASE("statics: a tip moment EI/L, material or inertial, bends the cantileve
   REQUIRE((shot.position - Eigen::Vector2d(std::sin(1.0), 1.0 - std::cos(1.0)) * L).norm() <= 1e-12);
   for (core::MomentFrame frame : {core::MomentFrame::material, core::MomentFrame::inertial}) {
     const test::Cantilever c = solved_cantilever([&](test::Cantilever& c) {
-      c.model.add_load(core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, EI / L), .frame = frame});
+      core::add_load(c.model, core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, EI / L), .frame = frame});
     });
     const Eigen::Vector2d exact(std::sin(1.0) * L, (1.0 - std::cos(1.0)) * L);
     INFO((frame == core::MomentFrame::material ? "material" : "inertial") << ": tip " << tip_xy(c).transpose());
@@ -110,7 +112,7 @@ TEST_CASE("statics: a distributed moment 3EI/L^2 bends the cantilever as M(s) = 
   REQUIRE(std::fabs(reference.angle - 1.5) <= 1e-12);
   for (core::MomentFrame frame : {core::MomentFrame::material, core::MomentFrame::inertial}) {
     const test::Cantilever c = solved_cantilever([&](test::Cantilever& c) {
-      c.model.add_load(core::DistributedMoment{.beam = c.beam, .moment_per_length = Eigen::Vector3d(0, 0, m),
+      core::add_load(c.model, core::DistributedMoment{.beam = c.beam, .moment_per_length = Eigen::Vector3d(0, 0, m),
                                                .frame = frame});
     });
     INFO((frame == core::MomentFrame::material ? "material" : "inertial") << ": tip " << tip_xy(c).transpose()
@@ -132,15 +134,15 @@ TEST_CASE("statics: gravity sags the cantilever exactly as the distributed force
     core::SectionInertia inertia;
     inertia.mass_per_length = rhoA;
     inertia.rotary = Eigen::Vector3d(2e-4, 1e-4, 1e-4).asDiagonal();
-    c.beam = c.model.add_beam({.centerline = test::straight_centerline(L, 32, 3),
+    c.beam = core::add_beam(c.model, {.centerline = test::straight_centerline(L, 32, 3),
                                .stiffness = test::cantilever_stiffness(), .inertia = inertia});
-    c.root = c.model.beam(c.beam).node(0);
-    c.tip = c.model.beam(c.beam).node(c.model.beam(c.beam).control_point_count() - 1);
+    c.root = core::beam(c.model, c.beam).node(0);
+    c.tip = core::beam(c.model, c.beam).node(core::beam(c.model, c.beam).control_point_count() - 1);
     c.model.fix(c.root);
     if (by_gravity)
       c.model.set_gravity(g);
     else
-      c.model.add_load(core::DistributedForce{.beam = c.beam, .force_per_length = rhoA * g});
+      core::add_load(c.model, core::DistributedForce{.beam = c.beam, .force_per_length = rhoA * g});
     solvers::solve_static(c.model, {.load_steps = 10});
     return c;
   };
@@ -168,7 +170,7 @@ TEST_CASE("statics: the tip-force cantilever converges to Reissner's rod as h^2,
     std::vector<double> errors;
     for (const int elements : {coarse, 2 * coarse}) {
       test::Cantilever c = test::make_cantilever(elements, degree, L);
-      c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(F.x(), F.y(), 0.0)});
+      core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(F.x(), F.y(), 0.0)});
       solvers::solve_static(c.model, {.load_steps = 10});
       errors.push_back((tip_xy(c) - reference.position).norm());
     }
@@ -190,7 +192,7 @@ TEST_CASE("nodal moments: the load tangent is the derivative of the residual alo
     core::Model model;
     const Eigen::Matrix3d R = lie::exp(Eigen::Vector3d(0.4, -1.3, 2.2));
     const int node = model.add_frame(Eigen::Vector3d(0.1, 0.2, 0.3), R);
-    model.add_load(core::NodalMoment{.node = node, .moment = M, .frame = frame});
+    core::add_load(model, core::NodalMoment{.node = node, .moment = M, .frame = frame});
     const core::Element& load = model.element(model.element_count() - 1);
     const core::ElementRequest request{.residual = true, .stiffness = true};
     const core::ElementInput in{.q = &model.state()};

@@ -3,6 +3,7 @@
 // synthetic trajectory with the rotation increment aliased by 8π that the slider-crank once had.
 #include <spar/lie/exp.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -96,7 +97,7 @@ TEST_CASE("velocity consistency: the flagship slider-crank run stores the rate o
   }
   const test::ConsistencyResult result =
       test::check_velocity_consistency(frames, {.acceleration_scale = 1e7, .energy_tolerance = 50.0});
-  const int root = mechanism.model.beam(mechanism.crank).node(0);
+  const int root = core::beam(mechanism.model, mechanism.crank).node(0);
   INFO("worst rate ratio " << result.worst_rate_ratio << ", worst kinetic-energy excess "
                            << result.worst_energy_excess << " J, Rod I root spin "
                            << integrator.velocity()(mechanism.model.state().blocks[root].offset + 5)

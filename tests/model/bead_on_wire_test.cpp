@@ -31,21 +31,9 @@ TEST_CASE("a joint that owns its coordinate: Jacobian, multiplier tangent, accel
     q.add_vector(Eigen::VectorXd::Constant(1, 3 * uniform(random)));  // s over ±6 m: θ over ±4.6 rad
     const double t = 0.0;
     CAPTURE(sample);
-    const Eigen::MatrixXd B = test::constraint_jacobian(wire, q, t);
-    CHECK(test::relative_difference(B, test::constraint_difference(wire, q, [&](const core::Configuration& p) {
-            return test::constraint_value(wire, p, t);
-          })) < test::vector_fd_tolerance);
     const Eigen::Vector3d lambda(uniform(random), uniform(random), uniform(random));
-    Eigen::MatrixXd K(4, 4);
-    wire.multiplier_tangent(q, t, lambda, K);
-    CHECK(test::relative_difference(K, test::constraint_difference(wire, q, [&](const core::Configuration& p) {
-            return Eigen::VectorXd(test::constraint_jacobian(wire, p, t).transpose() * lambda);
-          })) < test::vector_fd_tolerance);
     const Eigen::VectorXd velocity = Eigen::VectorXd::NullaryExpr(4, [&] { return uniform(random); });
-    Eigen::VectorXd c(3);
-    wire.acceleration_terms(q, velocity, t, c);
-    CHECK(test::relative_difference(c, test::acceleration_terms_difference(wire, q, velocity, t)) <
-          test::vector_acceleration_tolerance);
+    test::check_constraint_derivatives(wire, q, t, lambda, velocity);
   }
 }
 

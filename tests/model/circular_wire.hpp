@@ -50,25 +50,25 @@ public:
     return Eigen::Vector3d(-std::sin(theta), 0, std::cos(theta)) / radius_;
   }
 
-  void value(const core::Configuration& q, double, Eigen::Ref<Eigen::VectorXd> phi) const override {
+private:
+  void compute_value(const core::Configuration& q, double, Eigen::Ref<Eigen::VectorXd> phi) const override {
     phi = q.vector(blocks_[0]) - point(arc(q));
   }
-  void jacobian(const core::Configuration& q, double, Eigen::Ref<Eigen::MatrixXd> B) const override {
+  void compute_jacobian(const core::Configuration& q, double, Eigen::Ref<Eigen::MatrixXd> B) const override {
     B.leftCols<3>().setIdentity();
     B.col(3) = -tangent(arc(q));
   }
-  void multiplier_tangent(const core::Configuration& q, double, const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override {
-    K.setZero();
+  void compute_multiplier_tangent(const core::Configuration& q, double,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override {
     K(3, 3) = -curvature(arc(q)).dot(lambda);
   }
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double,
-                          Eigen::Ref<Eigen::VectorXd> c) const override {
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override {
     const double s_dot = velocity(q.blocks[blocks_[1]].offset);
     c = -curvature(arc(q)) * s_dot * s_dot;
   }
 
-private:
   double arc(const core::Configuration& q) const { return q.vector(blocks_[1])(0); }
 
   std::vector<int> blocks_;

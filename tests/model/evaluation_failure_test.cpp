@@ -45,7 +45,7 @@ std::unique_ptr<Oscillator> make_oscillator(bool limited) {
   return o;
 }
 
-solvers::DynamicOptions oscillator_options(double h, core::AssemblyExecution execution) {
+solvers::DynamicOptions oscillator_options(double h, solvers::AssemblyExecution execution) {
   solvers::DynamicOptions options;
   options.time_step = h;
   options.spectral_radius = 1.0;
@@ -62,13 +62,13 @@ TEST_CASE("an element that throws at an overshooting iterate makes the step cut 
   const double h = 0.2;
   auto reference = make_oscillator(false);
   solvers::GeneralizedAlpha reference_integrator(reference->model, {},
-                                                 oscillator_options(h / 2, core::AssemblyExecution::serial));
+                                                 oscillator_options(h / 2, solvers::AssemblyExecution::serial));
   reference_integrator.set_velocity(reference->mass, Eigen::VectorXd(Eigen::Vector3d(1, 0, 0)));
   reference_integrator.step();
   reference_integrator.step();
 
-  for (const core::AssemblyExecution execution : {core::AssemblyExecution::serial, core::AssemblyExecution::parallel}) {
-    CAPTURE(execution == core::AssemblyExecution::parallel);
+  for (const solvers::AssemblyExecution execution : {solvers::AssemblyExecution::serial, solvers::AssemblyExecution::parallel}) {
+    CAPTURE(execution == solvers::AssemblyExecution::parallel);
     auto limited = make_oscillator(true);
     solvers::GeneralizedAlpha integrator(limited->model, {}, oscillator_options(h, execution));
     integrator.set_velocity(limited->mass, Eigen::VectorXd(Eigen::Vector3d(1, 0, 0)));
@@ -89,8 +89,8 @@ TEST_CASE("an element that throws at an overshooting iterate makes the step cut 
 
 TEST_CASE("a step that fails even after every cut-back leaves the state of the step's start",
           "[model][errors]") {
-  for (const core::AssemblyExecution execution : {core::AssemblyExecution::serial, core::AssemblyExecution::parallel}) {
-    CAPTURE(execution == core::AssemblyExecution::parallel);
+  for (const solvers::AssemblyExecution execution : {solvers::AssemblyExecution::serial, solvers::AssemblyExecution::parallel}) {
+    CAPTURE(execution == solvers::AssemblyExecution::parallel);
     // A free mass at 1 m/s towards a limit at 0.37 m, steps of 0.1 s: the fourth step cannot
     // reach 0.4 m, and its halves get as close as 0.37 m before the last halving fails.
     core::Model model;

@@ -3,6 +3,7 @@
 // outside it alike.
 #include <spar/core/model.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -14,7 +15,7 @@ using namespace spar;
 
 TEST_CASE("set_gravity after the integrator is built is honoured at the next step", "[model]") {
   core::Model model;
-  const int body = model.add_rigid_body({.center_of_mass = Eigen::Vector3d(0, 0, 1), .mass = 2.0,
+  const int body = core::add_rigid_body(model, {.center_of_mass = Eigen::Vector3d(0, 0, 1), .mass = 2.0,
                                          .inertia = Eigen::Vector3d(1.0, 2.0, 3.0).asDiagonal()});
   const int bead = model.add_vector(Eigen::Vector3d(1, 0, 0));
   model.add_element(std::make_unique<test::PointMass>(bead, 0.5));
@@ -24,7 +25,7 @@ TEST_CASE("set_gravity after the integrator is built is honoured at the next ste
   options.time_step = 1e-2;
   options.residual_tolerance = 1e-12;
   solvers::GeneralizedAlpha integrator(model, {}, options);
-  const int body_dofs = integrator.configuration().blocks[model.rigid_body(body).node].offset;
+  const int body_dofs = integrator.configuration().blocks[core::rigid_body(model, body).node].offset;
   const int bead_dofs = integrator.configuration().blocks[bead].offset;
   // A free body's (and a free point mass's) acceleration is gravity, which the step's equations
   // M v̇ = m g at t_{n+1} give to Newton's residual tolerance (1e-12 of m g, so 1e-11 m/s²) and

@@ -2,6 +2,8 @@
 // model as it was.
 #include <spar/core/model.hpp>
 #include <spar/error.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -42,15 +44,15 @@ TEST_CASE("a configuration refuses an increment of the wrong size", "[model][err
 TEST_CASE("a beam refuses a section axis along its centerline and a wrong number of reference rotations",
           "[model][errors]") {
   core::Model model;
-  CHECK_THROWS_WITH(model.add_beam({.centerline = test::straight_centerline(1.0, 2, 2),
+  CHECK_THROWS_WITH(core::add_beam(model, {.centerline = test::straight_centerline(1.0, 2, 2),
                                     .stiffness = test::generic_stiffness(),
                                     .section_axis_hint = Eigen::Vector3d(2.0, 0.0, 0.0)}),
                     Catch::Contains("parallel to the centerline"));
-  CHECK_THROWS_WITH(model.add_beam({.centerline = test::straight_centerline(1.0, 2, 2),
+  CHECK_THROWS_WITH(core::add_beam(model, {.centerline = test::straight_centerline(1.0, 2, 2),
                                     .stiffness = test::generic_stiffness(),
                                     .reference_rotations = {Eigen::Matrix3d::Identity()}}),
                     Catch::Contains("got 1 reference rotations for 4 control points"));
-  CHECK(model.beam_count() == 0);
+  CHECK(core::beam_count(model) == 0);
   CHECK(model.block_count() == 0);
 }
 
@@ -58,17 +60,17 @@ TEST_CASE("a rigid body without mass and a beam of degree 0 or of zero speed are
           "[model][errors]") {
   core::Model model;
   try {
-    model.add_rigid_body({.mass = 0.0, .inertia = Eigen::Matrix3d::Identity()});
+    core::add_rigid_body(model, {.mass = 0.0, .inertia = Eigen::Matrix3d::Identity()});
     FAIL("a massless rigid body was accepted");
   } catch (const Error& error) {
     CHECK_THAT(error.what(), Catch::Contains("rigid body mass must be positive and finite, got 0"));
-    CHECK(error.where() == "core::Model::add_rigid_body");
+    CHECK(error.where() == "core::add_rigid_body");
     CHECK(error.fix() == "give the mass in kg");
   }
   // Degree 0: a piecewise-constant "centerline" (two points, knots {0, 0.5, 1}).
   const iga::NurbsCurve<3> constant(iga::KnotVector({0, 0.5, 1}, 0), iga::NurbsCurve<3>::Points::Zero(3, 2));
   try {
-    model.add_beam({.centerline = constant, .stiffness = test::generic_stiffness()});
+    core::add_beam(model, {.centerline = constant, .stiffness = test::generic_stiffness()});
     FAIL("a beam of degree 0 was accepted");
   } catch (const Error& error) {
     CHECK_THAT(error.what(), Catch::Contains("a beam needs degree p >= 1, got 0"));
@@ -79,7 +81,7 @@ TEST_CASE("a rigid body without mass and a beam of degree 0 or of zero speed are
   // the frames' construction from the tangent does not refuse it first).
   const iga::NurbsCurve<3> point(iga::KnotVector({0, 0, 0, 1, 1, 1}, 2), iga::NurbsCurve<3>::Points::Zero(3, 3));
   try {
-    model.add_beam({.centerline = point, .stiffness = test::generic_stiffness(),
+    core::add_beam(model, {.centerline = point, .stiffness = test::generic_stiffness(),
                     .reference_rotations = std::vector<Eigen::Matrix3d>(3, Eigen::Matrix3d::Identity())});
     FAIL("a beam of zero length was accepted");
   } catch (const Error& error) {
@@ -89,7 +91,7 @@ TEST_CASE("a rigid body without mass and a beam of degree 0 or of zero speed are
   }
   // Each refusal leaves no node behind (the beam's frames were added before its elements were
   // built, and a refused Gauss rule or zero speed left them in the model).
-  CHECK_THROWS_WITH(model.add_beam({.centerline = test::straight_centerline(1.0, 2, 2),
+  CHECK_THROWS_WITH(core::add_beam(model, {.centerline = test::straight_centerline(1.0, 2, 2),
                                     .stiffness = test::generic_stiffness(), .quadrature_points = 65}),
                     Catch::Contains("quadrature_points = 65"));
   CHECK(model.block_count() == 0);

@@ -9,6 +9,8 @@
 #include <spar/lie/exp.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/elements/loads/loads.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -162,7 +164,7 @@ struct Spinner {
   core::Model model;
   int node = 0;
   Spinner() {
-    node = model.rigid_body(model.add_rigid_body(
+    node = core::rigid_body(model, core::add_rigid_body(model, 
         {.mass = 2.0, .inertia = Eigen::Vector3d(0.04, 0.03, 0.05).asDiagonal()})).node;
   }
 };
@@ -190,7 +192,7 @@ TEST_CASE("a step that would turn a frame by pi or more is halved; with no halvi
     // inside the chart; Newton's first correction turns it by the step's 4 rad, which is refused.
     // The halves turn it by 1 and 3 rad.
     Spinner s;
-    s.model.add_load(core::NodalMoment{.node = s.node, .moment = Eigen::Vector3d(0, 0, 40.0)});
+    core::add_load(s.model, core::NodalMoment{.node = s.node, .moment = Eigen::Vector3d(0, 0, 40.0)});
     solvers::GeneralizedAlpha integrator(s.model, {}, options(h));
     REQUIRE_NOTHROW(integrator.step());
     CHECK(integrator.counters().rejected_rotations == 2);  // the first Newton iterate from each predictor

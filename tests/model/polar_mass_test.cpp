@@ -29,12 +29,7 @@ TEST_CASE("a configuration-dependent mass: stiffness, damping and mass against d
     const core::ElementOutput out =
         test::evaluate(element, s, {.stiffness = true, .damping = true, .mass = true});
     CAPTURE(sample);
-    CHECK(test::relative_difference(out.stiffness, test::residual_difference(element, s, test::Argument::coordinates)) <
-          test::vector_fd_tolerance);
-    CHECK(test::relative_difference(out.damping, test::residual_difference(element, s, test::Argument::velocity)) <
-          test::vector_fd_tolerance);
-    CHECK(test::relative_difference(out.mass, test::residual_difference(element, s, test::Argument::acceleration)) <
-          test::vector_fd_tolerance);
+    test::check_element_derivatives(element, s);
     // The same element on two 1-vector blocks gives the same numbers.
     test::ElementState split;
     split.q.add_vector(s.q.values.head(1));

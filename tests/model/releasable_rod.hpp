@@ -32,21 +32,6 @@ public:
   int equation_count() const override { return held_ ? 1 : 0; }
   const std::vector<int>& blocks() const override { return blocks_; }
 
-  void value(const core::Configuration& q, double, Eigen::Ref<Eigen::VectorXd> phi) const override {
-    if (held_) phi(0) = ((q.vector(blocks_[0]) - pivot_).squaredNorm() - length_ * length_) / (2 * length_);
-  }
-  void jacobian(const core::Configuration& q, double, Eigen::Ref<Eigen::MatrixXd> B) const override {
-    if (held_) B.row(0) = (q.vector(blocks_[0]) - pivot_).transpose() / length_;
-  }
-  void multiplier_tangent(const core::Configuration&, double, const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override {
-    K.setZero();
-    if (held_) K.diagonal().setConstant(lambda(0) / length_);
-  }
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double,
-                          Eigen::Ref<Eigen::VectorXd> c) const override {
-    if (held_) c(0) = velocity.segment<3>(q.blocks[blocks_[0]].offset).squaredNorm() / length_;
-  }
   bool update_structure(const core::Configuration&, const Eigen::VectorXd&, double t,
                         std::string& description) override {
     if (!held_ || t < release_time_ - 1e-9) return false;
@@ -56,6 +41,22 @@ public:
   }
 
 private:
+  void compute_value(const core::Configuration& q, double, Eigen::Ref<Eigen::VectorXd> phi) const override {
+    if (held_) phi(0) = ((q.vector(blocks_[0]) - pivot_).squaredNorm() - length_ * length_) / (2 * length_);
+  }
+  void compute_jacobian(const core::Configuration& q, double, Eigen::Ref<Eigen::MatrixXd> B) const override {
+    if (held_) B.row(0) = (q.vector(blocks_[0]) - pivot_).transpose() / length_;
+  }
+  void compute_multiplier_tangent(const core::Configuration&, double,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override {
+    if (held_) K.diagonal().setConstant(lambda(0) / length_);
+  }
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override {
+    if (held_) c(0) = velocity.segment<3>(q.blocks[blocks_[0]].offset).squaredNorm() / length_;
+  }
+
   std::vector<int> blocks_;
   Eigen::Vector3d pivot_;
   double length_, release_time_;

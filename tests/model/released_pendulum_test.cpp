@@ -58,19 +58,7 @@ TEST_CASE("the rod's Jacobian, multiplier tangent and acceleration terms", "[mod
   q.add_vector(Eigen::Vector3d(0.5, 0.4, -0.6));
   const Eigen::VectorXd lambda = Eigen::VectorXd::Constant(1, 1.7);
   const Eigen::VectorXd velocity = Eigen::Vector3d(0.3, -1.1, 0.7);
-  CHECK(test::relative_difference(test::constraint_jacobian(rod, q, 0),
-                                  test::constraint_difference(rod, q, [&](const core::Configuration& p) {
-                                    return test::constraint_value(rod, p, 0);
-                                  })) < test::vector_fd_tolerance);
-  Eigen::MatrixXd K(3, 3);
-  rod.multiplier_tangent(q, 0, lambda, K);
-  CHECK(test::relative_difference(K, test::constraint_difference(rod, q, [&](const core::Configuration& p) {
-          return Eigen::VectorXd(test::constraint_jacobian(rod, p, 0).transpose() * lambda);
-        })) < test::vector_fd_tolerance);
-  Eigen::VectorXd c(1);
-  rod.acceleration_terms(q, velocity, 0, c);
-  CHECK(test::relative_difference(c, test::acceleration_terms_difference(rod, q, velocity, 0)) <
-        test::vector_acceleration_tolerance);
+  test::check_constraint_derivatives(rod, q, 0, lambda, velocity);
   std::string description;
   CHECK_FALSE(rod.update_structure(q, velocity, 0.3, description));
   CHECK(rod.equation_count() == 1);

@@ -12,6 +12,7 @@
 #include <spar/joints/revolute_joint.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -49,7 +50,7 @@ struct Pendulum {
   core::Model model;
   solvers::ConstraintList joints;
   Pendulum(const Eigen::Vector3d& offset, int hinges = 1) {
-    const int body = model.rigid_body(model.add_rigid_body(
+    const int body = core::rigid_body(model, core::add_rigid_body(model, 
         {.center_of_mass = Eigen::Vector3d(0.5, 0, 0), .mass = 2.0,
          .inertia = Eigen::Vector3d(0.04, 0.03, 0.05).asDiagonal()})).node;
     for (int i = 0; i < hinges; ++i)

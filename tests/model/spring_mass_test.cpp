@@ -32,29 +32,22 @@ TEST_CASE("a spring defined in a test has the exact stiffness and a point mass t
     // Rest lengths below and above the current length: tension and compression.
     const test::LinearSpring spring({.block_a = 0, .block_b = 1, .stiffness = 50.0,
                                      .rest_length = 0.5 + 0.1 * sample});
-    const core::ElementOutput out = test::evaluate(spring, s, {.stiffness = true});
-    const Eigen::MatrixXd K_fd = test::residual_difference(spring, s, test::Argument::coordinates);
+    const core::ElementOutput out = test::evaluate(spring, s, {});
     CAPTURE(sample);
-    CHECK(test::relative_difference(out.stiffness, K_fd) < test::vector_fd_tolerance);
+    test::check_element_derivatives(spring, s);
     // The spring is a conservative force: its residual is the gradient of its strain energy.
-    const double energy_step = 1e-6;
+    const double energy_step = test::vector_element_options.step;
     for (int i = 0; i < 6; ++i) {
       test::ElementState plus = s, minus = s;
       plus.q.values(i) += energy_step;
       minus.q.values(i) -= energy_step;
       const double gradient = (test::evaluate(spring, plus, {}).energy.strain -
                                test::evaluate(spring, minus, {}).energy.strain) / (2 * energy_step);
-      CHECK(std::abs(gradient - out.residual(i)) < test::vector_fd_tolerance * std::max(1.0, std::abs(out.residual(i))));
+      CHECK(std::abs(gradient - out.residual(i)) <
+            test::vector_element_options.tolerance * std::max(1.0, std::abs(out.residual(i))));
     }
 
-    const test::PointMass mass(1, 2.5);
-    const core::ElementOutput m = test::evaluate(mass, s, {.stiffness = true, .damping = true, .mass = true});
-    CHECK(test::relative_difference(m.mass, test::residual_difference(mass, s, test::Argument::acceleration)) <
-          test::vector_fd_tolerance);
-    CHECK(test::relative_difference(m.stiffness, test::residual_difference(mass, s, test::Argument::coordinates)) <
-          test::vector_fd_tolerance);
-    CHECK(test::relative_difference(m.damping, test::residual_difference(mass, s, test::Argument::velocity)) <
-          test::vector_fd_tolerance);
+    test::check_element_derivatives(test::PointMass(1, 2.5), s);
   }
 }
 

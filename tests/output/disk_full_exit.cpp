@@ -1,13 +1,13 @@
 // A run whose disk fills up reports the failure and ends normally (docs/output.md, "A full
 // disk"): HDF5 1.10's cleanup at exit crashes after a failed write, so the library ends HDF5
-// itself and skips that cleanup then (lib/src/hdf5_lifetime.hpp).
+// itself and skips that cleanup then (lib/output/src/hdf5_lifetime.hpp).
 //
 // A program of its own rather than a Catch2 case: the protection holds in a process whose first
 // HDF5 call is the library's, and what is tested is the process's exit — CTest fails the test on
 // a crash (SIGSEGV at exit without the protection) or a nonzero status.
 //
 //   test_output_disk_full_exit FOLDER
-#include <spar/core/results_writer.hpp>
+#include <spar/output/results_writer.hpp>
 #include <spar/error.hpp>
 
 #include <sys/resource.h>
@@ -24,9 +24,9 @@ int main(int argc, char** argv) {
   }
   std::filesystem::create_directories(argv[1]);
   const std::string path = std::string(argv[1]) + "/run.h5";
-  spar::core::ResultsLayout layout;
+  spar::output::ResultsLayout layout;
   layout.centerline_points = {2000};  // 48 kB per step, written in blocks of one step
-  auto writer = std::make_unique<spar::core::ResultsWriter>(path, layout, 1);
+  auto writer = std::make_unique<spar::output::ResultsWriter>(path, layout, 1);
   writer->flush();  // the writer thread has made the file: its size is the empty file's
   // The file may grow 4 kB past its empty size: the first block's write fails with EFBIG (a
   // file-size limit, ignored as a signal), as on a full disk.
@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   std::string error;
   try {
     for (int k = 0; k < 10; ++k) {
-      spar::core::ResultsStep step;
+      spar::output::ResultsStep step;
       step.time = k;
       step.centerlines = {Eigen::MatrixXd::Constant(2000, 3, k)};
       writer->append(step);

@@ -4,7 +4,7 @@
 //
 //   test_output_kill_driver FILE.h5 STEPS
 
-#include <spar/core/results_writer.hpp>
+#include <spar/output/results_writer.hpp>
 
 #include <Eigen/Geometry>
 
@@ -14,8 +14,8 @@
 
 namespace {
 
-spar::core::ResultsLayout kill_layout() {
-  spar::core::ResultsLayout layout;
+spar::output::ResultsLayout kill_layout() {
+  spar::output::ResultsLayout layout;
   layout.node_count = 6;
   layout.multiplier_count = 4;
   layout.scalars = {{.name = "energy", .unit = "J", .description = "a number per step"},
@@ -24,13 +24,13 @@ spar::core::ResultsLayout kill_layout() {
   layout.centerline_points = {101, 61};
   layout.centerline_fields = {{.name = "speed", .unit = "m/s", .description = "a value per point"},
                               {.name = "velocity", .unit = "m/s", .description = "a vector per point", .components = 3}};
-  layout.rigid_bodies = {{.node = 1, .kind = spar::core::RigidBodyShape::Kind::box, .size = {0.4, 0.2, 0.1}}};
+  layout.rigid_bodies = {{.node = 1, .kind = spar::output::RigidBodyShape::Kind::box, .size = {0.4, 0.2, 0.1}}};
   return layout;
 }
 
 void run(const std::string& path, int steps) {
-  const spar::core::ResultsLayout layout = kill_layout();
-  spar::core::ResultsWriter writer(path, layout, 5);
+  const spar::output::ResultsLayout layout = kill_layout();
+  spar::output::ResultsWriter writer(path, layout, 5);
   writer.write_attribute("purpose", std::string("killed at random moments by results_kill_test"));
   writer.write_constant("reference/centerline", Eigen::MatrixXd::Constant(101, 3, 0.5), "m", "a constant");
   spar::core::Configuration q;
@@ -38,7 +38,7 @@ void run(const std::string& path, int steps) {
   const Eigen::VectorXd velocity = Eigen::VectorXd::Ones(6 * layout.node_count);
   const Eigen::VectorXd multipliers = Eigen::VectorXd::Ones(layout.multiplier_count);
   for (int k = 0; k < steps; ++k) {
-    spar::core::ResultsStep step{.time = 1e-3 * k, .configuration = &q, .velocity = &velocity,
+    spar::output::ResultsStep step{.time = 1e-3 * k, .configuration = &q, .velocity = &velocity,
                                  .multipliers = &multipliers, .scalars = {0.5 * k, double(k % 7)},
                                  .probes = {Eigen::Vector3d(k, 0, 1)}};
     for (int points : layout.centerline_points) {

@@ -5,7 +5,7 @@
 /// ResultsWriter wrote.
 
 #include <spar/core/configuration.hpp>
-#include <spar/core/results_writer.hpp>
+#include <spar/output/results_writer.hpp>
 
 #include <Eigen/Geometry>
 #include <hdf5.h>
@@ -41,8 +41,8 @@ private:
   std::filesystem::path path_;
 };
 
-inline core::ResultsLayout sample_layout() {
-  core::ResultsLayout layout;
+inline output::ResultsLayout sample_layout() {
+  output::ResultsLayout layout;
   layout.node_count = 3;
   layout.multiplier_count = 2;
   layout.scalars = {{.name = "kinetic_energy", .unit = "J", .description = "kinetic energy"},
@@ -52,7 +52,7 @@ inline core::ResultsLayout sample_layout() {
   layout.centerline_fields = {{.name = "arc_length", .unit = "m", .description = "arc length"},
                               {.name = "velocity", .unit = "m/s", .description = "velocity", .components = 3}};
   // A box off its node's origin, and the axes at their default length (a tenth of the model's extent).
-  layout.rigid_bodies = {{.node = 1, .kind = core::RigidBodyShape::Kind::box, .size = {0.4, 0.2, 0.1},
+  layout.rigid_bodies = {{.node = 1, .kind = output::RigidBodyShape::Kind::box, .size = {0.4, 0.2, 0.1},
                           .offset = {0.05, -0.1, 0.2}},
                          {.node = 2}};
   return layout;
@@ -63,7 +63,7 @@ struct SampleStep {
   core::Configuration configuration;
   Eigen::VectorXd velocity;
   Eigen::VectorXd multipliers;
-  core::ResultsStep step;
+  output::ResultsStep step;
 
   explicit SampleStep(int k) {
     for (int i = 0; i < 3; ++i) {
@@ -202,6 +202,18 @@ public:
   }
 
   std::string string_attribute(const std::string& name) const { return string_attribute_of("/", name).value; }
+
+  /// The names of the attributes of `object` (a group or dataset path), in name order.
+  std::vector<std::string> attribute_names(const std::string& object) const {
+    std::vector<std::string> names;
+    auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+      static_cast<std::vector<std::string>*>(data)->push_back(name);
+      return 0;
+    };
+    if (H5Aiterate_by_name(id_, object.c_str(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names, H5P_DEFAULT) < 0)
+      throw std::runtime_error("cannot list the attributes of " + object);
+    return names;
+  }
 
 private:
   hid_t id_;

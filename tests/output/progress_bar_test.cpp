@@ -1,6 +1,6 @@
 #include "output_fixtures.hpp"
 
-#include <spar/core/progress_bar.hpp>
+#include <spar/output/progress_bar.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -10,8 +10,8 @@
 using Catch::Matchers::Contains;
 using Catch::Matchers::EndsWith;
 using Catch::Matchers::StartsWith;
-using spar::core::format_progress;
-using spar::core::ProgressSnapshot;
+using spar::output::format_progress;
+using spar::output::ProgressSnapshot;
 
 TEST_CASE("format_progress shows steps, time, percent and ETA", "[output]") {
   ProgressSnapshot snapshot{"slider-crank", 0.05, 0.0, 0.2, 500, 10.0};
@@ -42,7 +42,7 @@ TEST_CASE("ProgressBar writes nothing when stderr is not a terminal", "[output]"
   dup2(redirected, STDERR_FILENO);
   bool active = true;
   {
-    spar::core::ProgressBar bar(1.0, "run");
+    spar::output::ProgressBar bar(1.0, "run");
     active = bar.active();
     bar.update(0.5, 10);
     bar.finish();

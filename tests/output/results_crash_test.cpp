@@ -1,7 +1,7 @@
 #include "output_fixtures.hpp"
 #include "xml_reader.hpp"
 
-#include <spar/core/results_writer.hpp>
+#include <spar/output/results_writer.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -10,7 +10,7 @@
 #include <set>
 #include <sys/wait.h>
 
-using spar::core::ResultsWriter;
+using spar::output::ResultsWriter;
 using spar::test::SampleStep;
 
 namespace {

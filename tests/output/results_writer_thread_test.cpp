@@ -1,7 +1,7 @@
 #include "output_fixtures.hpp"
 #include "xml_reader.hpp"
 
-#include <spar/core/results_writer.hpp>
+#include <spar/output/results_writer.hpp>
 #include <spar/error.hpp>
 
 #include <catch2/catch.hpp>
@@ -18,7 +18,7 @@
 #include <vector>
 
 using Catch::Matchers::Contains;
-using spar::core::ResultsWriter;
+using spar::output::ResultsWriter;
 using spar::test::ReadOnlyFile;
 using spar::test::SampleStep;
 
@@ -210,11 +210,11 @@ TEST_CASE("An error on the writer thread surfaces on the caller and closes the w
   const spar::test::ScratchFolder folder("thread_error");
   const std::string path = folder.file("run.h5");
   const std::string messages = run_in_child([&] {
-    spar::core::ResultsLayout layout;
+    spar::output::ResultsLayout layout;
     layout.centerline_points = {2000};
     auto writer = std::make_unique<ResultsWriter>(path, layout, 1);
     const auto step = [](int k) {
-      spar::core::ResultsStep s;
+      spar::output::ResultsStep s;
       s.time = k;
       s.centerlines = {Eigen::MatrixXd::Constant(2000, 3, k)};
       return s;
@@ -247,7 +247,7 @@ TEST_CASE("An error on the writer thread surfaces on the caller and closes the w
     return text + "destroyed\n";
   });
   INFO(messages);
-  const std::string where = "core::ResultsWriter::";
+  const std::string where = "output::ResultsWriter::";
   CHECK_THAT(messages, Contains("first: spar: " + where + "flush(" + path + "): HDF5 failed to") &&
                            Contains("disk is not full"));
   for (const std::string call : {"append", "flush", "write_attribute"})
@@ -312,7 +312,7 @@ TEST_CASE("An error of the writer thread making the file surfaces at the next ca
   INFO(messages);
   for (const std::string call : {"append", "flush", "write_attribute", "close"}) {
     const std::string path = folder.file(call + ".h5");
-    CHECK_THAT(messages, Contains(call + ": steps on disk 0, spar: core::ResultsWriter::ResultsWriter(" + path +
+    CHECK_THAT(messages, Contains(call + ": steps on disk 0, spar: output::ResultsWriter::ResultsWriter(" + path +
                                   "): HDF5 failed to") &&
                              Contains(call + ": then closed\n"));
   }

@@ -7,7 +7,8 @@
 // quaternion written out by hand, so the writer's conversion and the integrator's state are both
 // checked from outside.
 #include <spar/core/model.hpp>
-#include <spar/core/results_writer.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/output/results_writer.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 
 #include <catch2/catch.hpp>
@@ -26,7 +27,7 @@ TEST_CASE("a run's results file holds the exact motion of a falling, spinning bo
   const Eigen::Vector3d x0(0.1, 0.2, 0.3), v0(1.0, 2.0, 0.5), g(0, -9.81, 0);
   const Eigen::Matrix3d J = Eigen::Vector3d(0.02, 0.02, 0.03).asDiagonal();
   core::Model model;
-  const int body = model.rigid_body(model.add_rigid_body(
+  const int body = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = x0, .rotation = Eigen::AngleAxisd(2 * half_tilt, Eigen::Vector3d::UnitX()).toRotationMatrix(),
        .mass = mass, .inertia = J})).node;
   model.set_gravity(g);
@@ -36,11 +37,11 @@ TEST_CASE("a run's results file holds the exact motion of a falling, spinning bo
 
   const spar::test::ScratchFolder folder("run_results");
   const std::string path = folder.file("body.h5");
-  core::ResultsLayout layout;
+  output::ResultsLayout layout;
   layout.node_count = 1;
   layout.scalars = {{.name = "kinetic_energy", .unit = "J", .description = "kinetic energy"}};
   {
-    core::ResultsWriter writer(path, layout, 64);  // 1001 steps: 15 full blocks and a partial one
+    output::ResultsWriter writer(path, layout, 64);  // 1001 steps: 15 full blocks and a partial one
     const auto append = [&] {
       writer.append({.time = integrator.time(), .configuration = &model.state(), .velocity = &integrator.velocity(),
                      .scalars = {integrator.energies().kinetic}});

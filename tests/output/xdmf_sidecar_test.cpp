@@ -1,7 +1,7 @@
 #include "output_fixtures.hpp"
 #include "xml_reader.hpp"
 
-#include <spar/core/results_writer.hpp>
+#include <spar/output/results_writer.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-using spar::core::ResultsWriter;
+using spar::output::ResultsWriter;
 using spar::test::ReadOnlyFile;
 using spar::test::SampleStep;
 using spar::test::XmlElement;
@@ -159,7 +159,7 @@ long long bytes_written_by_process() {
 // time, keeps the test deterministic: the old writer wrote ~1000 times more at the last flush.
 TEST_CASE("A flush writes as many bytes at step 100 000 as at step 100", "[output]") {
   const spar::test::ScratchFolder folder("flush_cost");
-  spar::core::ResultsLayout layout;
+  spar::output::ResultsLayout layout;
   layout.centerline_points = {2};
   const int flush_every = 100, blocks = 1000;
   ResultsWriter writer(folder.file("run.h5"), layout, flush_every);
@@ -168,7 +168,7 @@ TEST_CASE("A flush writes as many bytes at step 100 000 as at step 100", "[outpu
     const long long before = bytes_written_by_process();
     for (int i = 0; i < flush_every; ++i) {
       const int k = block * flush_every + i;
-      spar::core::ResultsStep step;
+      spar::output::ResultsStep step;
       step.time = 1e-3 * k;
       step.centerlines = {Eigen::MatrixXd::Constant(2, 3, k)};
       writer.append(step);

@@ -1,11 +1,11 @@
-// Curved stress-free cables (core/cable_reference.hpp, docs/rancf.md "Curved cables"): the exact
+// Curved stress-free cables (elements/cable/cable_reference.hpp, docs/rancf.md "Curved cables"): the exact
 // arc of 000 eq. (43) cut at any breakpoints with one slope per node, reference strains and their
 // material derivatives against differences, elements built on the reference free of stress, the
 // Jacobians of both elements with a reference against central differences, and clear errors.
-#include <spar/core/cable_reference.hpp>
-#include <spar/core/elements/rancf_cable_element.hpp>
-#include <spar/core/elements/rancf_segmentation.hpp>
-#include <spar/core/sliding_cable.hpp>
+#include <spar/elements/cable/cable_reference.hpp>
+#include <spar/elements/cable/rancf_cable_element.hpp>
+#include <spar/elements/cable/rancf_segmentation.hpp>
+#include <spar/elements/cable/sliding_cable.hpp>
 #include <spar/error.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/iga/rational_bezier.hpp>
@@ -159,34 +159,16 @@ TEST_CASE("RANCF and ALE-RANCF with a reference: Jacobians against central diffe
           "[rancf][reference]") {
   const auto reference = std::make_shared<const core::CableReference>(wavy_reference());
   const Eigen::Vector3d gravity(0.3, -9.81, 0.0);
-  // As in rancf_element_test: h = 1e-6 on O(1) coordinates, 1e-7 relative leaves a wide margin.
+  // test::rancf_check_options, as in rancf_element_test: h = 1e-6 on O(1) coordinates, 1e-7
+  // relative leaves a wide margin. In statics the residual is the gradient of the potential U + V:
+  // the potential check differentiates the energies the element reports, including through ε₀(x_g),
+  // κ₀(x_g) in x_A and x_B.
   for (bool dynamic : {false, true}) {
     test::RancfState s = test::random_rancf_state<2>(11, Eigen::Vector4d(1.0, 0.8, 1.3, 0.9), true);
     s.parameters.reference = reference;
     const core::AleRancfCableElement<2> ale(s.parameters);
-    const core::ElementOutput out =
-        test::evaluate_all(ale, s.q, dynamic ? &s.v : nullptr, dynamic ? &s.a : nullptr, gravity);
     INFO("ALE, dynamic " << dynamic);
-    CHECK(test::relative_difference(out.stiffness,
-                                    test::residual_difference(ale, s, 0, 1e-6, gravity, dynamic)) <= 1e-7);
-    if (dynamic)
-      CHECK(test::relative_difference(out.damping, test::residual_difference(ale, s, 1, 1e-2, gravity)) <= 1e-7);
-    if (!dynamic) {
-      // In statics the residual is the gradient of the potential U + V: central differences of
-      // the energies the element reports, including through ε₀(x_g), κ₀(x_g) in x_A and x_B.
-      Eigen::VectorXd gradient(s.q.dof_count());
-      for (int j = 0; j < s.q.dof_count(); ++j) {
-        double potential[2];
-        for (int side = 0; side < 2; ++side) {
-          core::Configuration q = s.q;
-          q.values(j) += side == 0 ? 1e-6 : -1e-6;
-          const core::ElementOutput o = test::evaluate_all(ale, q, nullptr, nullptr, gravity);
-          potential[side] = o.energy.strain + o.energy.gravity;
-        }
-        gradient(j) = (potential[0] - potential[1]) / 2e-6;
-      }
-      CHECK((out.residual - gradient).cwiseAbs().maxCoeff() <= 1e-7 * gradient.cwiseAbs().maxCoeff());
-    }
+    test::check_rancf_derivatives(ale, s, gravity, dynamic, !dynamic);
     // The material coordinates enter through ε₀(x_g), κ₀(x_g): the force on x_A, x_B differs
     // from the element without a reference (a term that vanished would make them equal).
     test::RancfState bare = s;
@@ -200,8 +182,7 @@ TEST_CASE("RANCF and ALE-RANCF with a reference: Jacobians against central diffe
   s.parameters.reference = reference;
   s.parameters.material_start = 0.4;
   const core::RancfCableElement<2> fixed(s.parameters);
-  const core::ElementOutput out = test::evaluate_all(fixed, s.q, &s.v, &s.a, gravity);
-  CHECK(test::relative_difference(out.stiffness, test::residual_difference(fixed, s, 0, 1e-6, gravity)) <= 1e-7);
+  test::check_rancf_derivatives(fixed, s, gravity, true);
 }
 
 TEST_CASE("a segmentation with a reference changes the strain energy only by the quadrature error",

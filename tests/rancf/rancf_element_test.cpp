@@ -2,7 +2,7 @@
 // central differences, the inertial force against the Euler–Lagrange equations of the element's
 // own kinetic energy, equal weights against an independent plain ANCF cable, and the ALE element
 // with fixed material coordinates against the fixed-length element.
-#include <spar/core/elements/rancf_cable_element.hpp>
+#include <spar/elements/cable/rancf_cable_element.hpp>
 #include <spar/error.hpp>
 #include <spar/iga/quadrature.hpp>
 #include <spar/iga/rational_bezier.hpp>
@@ -19,28 +19,13 @@ namespace {
 const Eigen::Vector3d gravity(0.3, -9.81, 0.7);
 const Eigen::Vector4d uneven_weights(1.0, 0.8, 1.3, 0.9);
 
-// Central differences with h = 1e-6 on O(1) coordinates: truncation h² |r'''| ~ 1e-12 relative
-// and round-off ε |r|/h ~ 1e-10 relative (the residual's terms are up to 1e2 times the largest
-// Jacobian entry over the entries' scale), so 1e-7 leaves a wide margin; a wrong term is O(1).
-constexpr double fd_tolerance = 1e-7;
-constexpr double fd_step = 1e-6;
-// The residual is exactly quadratic in v and linear in v̇, so central differences in them have no
-// truncation error at all: a large step keeps the round-off ε |r|/h small.
-constexpr double fd_step_rates = 1e-2;
-
 template <int Dim>
 void check_fixed_stiffness() {
   for (const Eigen::Vector4d& w : {Eigen::Vector4d::Ones().eval(), uneven_weights}) {
     const test::RancfState s = test::random_rancf_state<Dim>(7, w, false);
     const core::RancfCableElement<Dim> element(s.parameters);
-    const core::ElementOutput out = test::evaluate_all(element, s.q, &s.v, &s.a, gravity);
-    const Eigen::MatrixXd K = test::residual_difference(element, s, 0, fd_step, gravity);
-    const Eigen::MatrixXd M = test::residual_difference(element, s, 2, fd_step_rates, gravity);
     INFO("Dim " << Dim << ", weights " << w.transpose());
-    CHECK(test::relative_difference(out.stiffness, K) <= fd_tolerance);
-    CHECK(test::relative_difference(out.mass, M) <= fd_tolerance);
-    CHECK(test::relative_difference(out.damping, test::residual_difference(element, s, 1, fd_step_rates, gravity)) <=
-          fd_tolerance);
+    test::check_rancf_derivatives(element, s, gravity, true);
     // In statics K is the Hessian of the strain energy: symmetric to round-off.
     const core::ElementOutput statics = test::evaluate_all(element, s.q, nullptr, nullptr, gravity);
     CHECK((statics.stiffness - statics.stiffness.transpose()).cwiseAbs().maxCoeff() <=
@@ -53,17 +38,8 @@ void check_ale_jacobians(bool dynamic) {
   for (const Eigen::Vector4d& w : {Eigen::Vector4d::Ones().eval(), uneven_weights}) {
     const test::RancfState s = test::random_rancf_state<Dim>(11, w, true);
     const core::AleRancfCableElement<Dim> element(s.parameters);
-    const core::ElementOutput out = test::evaluate_all(element, s.q, dynamic ? &s.v : nullptr,
-                                                       dynamic ? &s.a : nullptr, gravity);
     INFO("Dim " << Dim << ", weights " << w.transpose() << ", dynamic " << dynamic);
-    CHECK(test::relative_difference(
-              out.stiffness, test::residual_difference(element, s, 0, fd_step, gravity, dynamic)) <=
-          fd_tolerance);
-    if (!dynamic) continue;
-    CHECK(test::relative_difference(out.damping, test::residual_difference(element, s, 1, fd_step_rates, gravity)) <=
-          fd_tolerance);
-    CHECK(test::relative_difference(out.mass, test::residual_difference(element, s, 2, fd_step_rates, gravity)) <=
-          fd_tolerance);
+    test::check_rancf_derivatives(element, s, gravity, dynamic);
   }
 }
 

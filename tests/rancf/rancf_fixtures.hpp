@@ -1,10 +1,12 @@
 #pragma once
 // Shared fixtures of the RANCF tests: one element's blocks in a configuration, a deformed random
-// state, and evaluation helpers with central finite differences over the local coordinates.
-#include <spar/core/elements/rancf_cable_element.hpp>
+// state, an evaluation helper and the elements' derivative check (core::check_element).
+#include <spar/elements/cable/rancf_cable_element.hpp>
+#include <spar/core/check_element.hpp>
 #include <spar/core/model.hpp>
 
 #include <Eigen/Core>
+#include <catch2/catch.hpp>
 
 #include <memory>
 #include <random>
@@ -76,31 +78,31 @@ inline core::ElementOutput evaluate_all(const core::Element& element, const core
   return out;
 }
 
-/// Central differences of the residual in the local coordinates (which = 0), velocities (1) or
-/// accelerations (2); all blocks are vector blocks, so the local order is the global one here.
-inline Eigen::MatrixXd residual_difference(const core::Element& element, const RancfState& s,
-                                           int which, double h, const Eigen::Vector3d& gravity,
-                                           bool dynamic = true) {
-  const int n = s.q.dof_count();
-  Eigen::MatrixXd J(n, n);
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd r[2];
-    for (int side = 0; side < 2; ++side) {
-      RancfState t = s;
-      const double step = side == 0 ? h : -h;
-      if (which == 0) t.q.values(j) += step;
-      if (which == 1) t.v(j) += step;
-      if (which == 2) t.a(j) += step;
-      r[side] = evaluate_all(element, t.q, dynamic ? &t.v : nullptr, dynamic ? &t.a : nullptr,
-                             gravity).residual;
-    }
-    J.col(j) = (r[0] - r[1]) / (2 * h);
-  }
-  return J;
-}
+// The elements' derivatives against central differences of their residual (core::check_element),
+// with h = 1e-6 on O(1) coordinates: truncation h² |r'''| ~ 1e-12 relative and round-off ε |r|/h ~
+// 1e-10 relative (the residual's terms are up to 1e2 times the largest Jacobian entry over the
+// entries' scale), so 1e-7 relative to the largest entry of each difference leaves a wide margin;
+// a wrong term is O(1). The residual is exactly quadratic in v and linear in v̇, so central
+// differences in them have no truncation error at all: a large step keeps the round-off ε |r|/h
+// small.
+inline constexpr core::ElementCheckOptions rancf_check_options{
+    .step = 1e-6, .rate_step = 1e-2, .tolerance = 1e-7, .scale_floor = 0.0};
 
-inline double relative_difference(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
-  return (A - B).cwiseAbs().maxCoeff() / B.cwiseAbs().maxCoeff();
+/// CHECKs the element's stiffness at the state `s` — statics unless `dynamic` — and in dynamics its
+/// damping and mass, with core::check_element; with `potential` (statics) also its residual
+/// against the gradient of its strain and gravity energy.
+inline void check_rancf_derivatives(const core::Element& element, const RancfState& s, const Eigen::Vector3d& gravity,
+                                    bool dynamic, bool potential = false) {
+  core::ElementInput in{.q = &s.q, .gravity = gravity};
+  if (dynamic) {
+    in.velocity = &s.v;
+    in.acceleration = &s.a;
+  }
+  core::ElementCheckOptions options = rancf_check_options;
+  options.potential = potential;
+  const core::DerivativeCheck check = core::check_element(element, in, options);
+  INFO(check.description());
+  CHECK(check.passed());
 }
 
 /// A straight cable along +X of `elements` equal elements (unit weights: a straight line with

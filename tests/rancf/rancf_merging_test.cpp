@@ -1,9 +1,9 @@
 // Merging of two ALE-RANCF elements (000 §4.2, docs/rancf.md eqs. R25–R29): the weights of
 // eqs. (31)–(38), exact recovery of a split element in 3D, the merged curve through the deleted
 // node in 2D, the fallback, and the geometry and energy change of a merge, RANCF against ANCF.
-#include <spar/core/elements/rancf_cable_element.hpp>
-#include <spar/core/elements/rancf_merging.hpp>
-#include <spar/core/elements/rancf_segmentation.hpp>
+#include <spar/elements/cable/rancf_cable_element.hpp>
+#include <spar/elements/cable/rancf_merging.hpp>
+#include <spar/elements/cable/rancf_segmentation.hpp>
 #include <spar/error.hpp>
 #include <spar/iga/rational_bezier.hpp>
 

@@ -2,8 +2,8 @@
 // weights, position and velocity fields unchanged to round-off; energies unchanged to the
 // quadrature error; the velocity operator J and the convective acceleration against central
 // differences of the split itself.
-#include <spar/core/elements/rancf_cable_element.hpp>
-#include <spar/core/elements/rancf_segmentation.hpp>
+#include <spar/elements/cable/rancf_cable_element.hpp>
+#include <spar/elements/cable/rancf_segmentation.hpp>
 #include <spar/error.hpp>
 #include <spar/iga/rational_bezier.hpp>
 

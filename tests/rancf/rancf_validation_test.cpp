@@ -1,6 +1,6 @@
 // Validation of the RANCF cable: a cantilever under a dead tip force against the Euler elastica
 // (docs/validation.md), and the energy conservation of a swinging cable, fixed-length and ALE.
-#include <spar/core/elements/point_mass_element.hpp>
+#include <spar/elements/rigid_body/point_mass_element.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/solvers/static_solver.hpp>
 

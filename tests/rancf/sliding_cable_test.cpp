@@ -2,7 +2,7 @@
 // lumped mass (000 §6.2's setup): events keep the element lengths in [0.5, 1.5] L_std and the node
 // count constant, energy is conserved between events (ρ∞ = 1), and each event changes the energy
 // only by the merge.
-#include <spar/core/sliding_cable.hpp>
+#include <spar/elements/cable/sliding_cable.hpp>
 #include <spar/joints/sliding_node_slopes.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 

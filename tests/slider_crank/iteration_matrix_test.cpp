@@ -2,6 +2,7 @@
 // on the flexible slider-crank (beams, a rigid body, spherical and prismatic joints, a moment,
 // gravity) in a deformed, moving state, in the middle of a step (increment ≠ 0).
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -28,7 +29,7 @@ TEST_CASE("the assembled dynamic iteration matrix is the derivative of the assem
   core::Model& model = mechanism.model;
   std::vector<joints::Constraint*> constraints;
   for (const auto& joint : mechanism.joints) constraints.push_back(joint.get());
-  solvers::detail::SystemAssembly assembly(model, constraints, core::AssemblyExecution::serial);
+  solvers::detail::SystemAssembly assembly(model, constraints, solvers::AssemblyExecution::serial);
   const int n = assembly.dof_count(), m = assembly.multiplier_count();
 
   std::mt19937 random(1601);
@@ -124,17 +125,17 @@ TEST_CASE("the assembly's substructures: one per body, the multipliers and fixed
   // multipliers are the interface (docs/dynamics.md D12).
   examples::SliderCrank mechanism = examples::build_slider_crank(2);
   core::Model& model = mechanism.model;
-  const int fixed_block = model.beam(mechanism.crank).node(0);
+  const int fixed_block = core::beam(model, mechanism.crank).node(0);
   model.fix(fixed_block);  // a fixed node: its dofs are marked apart, whatever body holds them
   std::vector<joints::Constraint*> constraints;
   for (const auto& joint : mechanism.joints) constraints.push_back(joint.get());
-  solvers::detail::SystemAssembly assembly(model, constraints, core::AssemblyExecution::serial);
+  solvers::detail::SystemAssembly assembly(model, constraints, solvers::AssemblyExecution::serial);
   const std::vector<int>& substructure = assembly.substructures();
   REQUIRE(static_cast<int>(substructure.size()) == assembly.size());
   const core::Configuration& q = model.state();
   const auto id = [&](int block) { return substructure[q.blocks[block].offset]; };
-  const core::GeometricallyExactBeam& crank = model.beam(mechanism.crank);
-  const core::GeometricallyExactBeam& coupler = model.beam(mechanism.coupler);
+  const core::GeometricallyExactBeam& crank = core::beam(model, mechanism.crank);
+  const core::GeometricallyExactBeam& coupler = core::beam(model, mechanism.coupler);
   const int crank_id = id(crank.node(1)), coupler_id = id(coupler.node(0));
   CHECK(crank_id >= 0);
   CHECK(coupler_id >= 0);

@@ -3,6 +3,7 @@
 // rod, ρ∞ = 0.9): Rod II's midpoint after every step, the largest constraint residual and the
 // integrator's counters.
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <algorithm>
 #include <vector>
@@ -21,7 +22,7 @@ struct SliderCrankRun {
 /// residual to 1e-10, from t = 0 to t_end in steps of h.
 inline SliderCrankRun run_slider_crank(solvers::IterationMatrix strategy, double h, double t_end, double tolerance) {
   examples::SliderCrank mechanism = examples::build_slider_crank(6);
-  const core::GeometricallyExactBeam& coupler = mechanism.model.beam(mechanism.coupler);
+  const core::GeometricallyExactBeam& coupler = core::beam(mechanism.model, mechanism.coupler);
   solvers::GeneralizedAlpha integrator(
       mechanism.model, std::move(mechanism.joints),
       {.time_step = h, .spectral_radius = 0.9, .iteration_matrix = strategy,

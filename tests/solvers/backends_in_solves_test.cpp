@@ -2,6 +2,7 @@
 // flexible pendulum's swing give the same states as KLU with serial assembly.
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/loads/loads.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -18,15 +19,15 @@ namespace {
 
 struct Setup {
   solvers::LinearSolverKind kind;
-  core::AssemblyExecution assembly;
+  solvers::AssemblyExecution assembly;
 };
 
-const std::vector<Setup> setups{{solvers::LinearSolverKind::klu, core::AssemblyExecution::serial},
-                                {solvers::LinearSolverKind::umfpack, core::AssemblyExecution::serial},
-                                {solvers::LinearSolverKind::eigen_lu, core::AssemblyExecution::serial},
-                                {solvers::LinearSolverKind::klu, core::AssemblyExecution::parallel},
-                                {solvers::LinearSolverKind::umfpack, core::AssemblyExecution::parallel},
-                                {solvers::LinearSolverKind::eigen_lu, core::AssemblyExecution::parallel}};
+const std::vector<Setup> setups{{solvers::LinearSolverKind::klu, solvers::AssemblyExecution::serial},
+                                {solvers::LinearSolverKind::umfpack, solvers::AssemblyExecution::serial},
+                                {solvers::LinearSolverKind::eigen_lu, solvers::AssemblyExecution::serial},
+                                {solvers::LinearSolverKind::klu, solvers::AssemblyExecution::parallel},
+                                {solvers::LinearSolverKind::umfpack, solvers::AssemblyExecution::parallel},
+                                {solvers::LinearSolverKind::eigen_lu, solvers::AssemblyExecution::parallel}};
 
 /// Largest distance between the node positions of two configurations.
 double max_distance(const core::Configuration& a, const core::Configuration& b) {
@@ -51,10 +52,10 @@ TEST_CASE("every linear solver and the parallel assembly give the same static an
   std::vector<long> static_iterations, dynamic_iterations;
   for (const Setup& s : setups) {
     INFO("solver " << solvers::to_string(s.kind) << ", "
-                   << (s.assembly == core::AssemblyExecution::parallel ? "parallel" : "serial") << " assembly");
+                   << (s.assembly == solvers::AssemblyExecution::parallel ? "parallel" : "serial") << " assembly");
     // Statics: a cantilever rolled into a half circle (M = π EI/L) in 4 load steps.
     auto c = test::make_cantilever(16, 3);
-    c.model.add_load(core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, std::numbers::pi * 1e4),
+    core::add_load(c.model, core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0, 0, std::numbers::pi * 1e4),
                                        .frame = core::MomentFrame::material});
     const solvers::StaticReport report =
         solvers::solve_static(c.model, {.load_steps = 4, .linear_solver = s.kind, .assembly = s.assembly});

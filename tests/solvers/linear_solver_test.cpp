@@ -1,7 +1,7 @@
 // The sparse LU backends on random non-symmetric systems and Laplacians, refactorization on a
-// fixed pattern, a system assembled through core::SparsePattern with Dirichlet conditions, and
+// fixed pattern, a system assembled through solvers::SparsePattern with Dirichlet conditions, and
 // the errors of the LinearSolver interface. Every test runs for every backend.
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 #include <spar/error.hpp>
 #include <spar/solvers/linear_solver.hpp>
 
@@ -239,9 +239,9 @@ TEST_CASE("a system assembled by SparsePattern with Dirichlet conditions solves"
   const LinearSolverKind kind = GENERATE(from_range(all_kinds));
   INFO("solver " << solvers::to_string(kind));
   const int size = 51;
-  std::vector<core::PatternBlock> blocks;
-  for (int e = 0; e + 1 < size; ++e) blocks.push_back(core::PatternBlock::element({e, e + 1}));
-  core::SparsePattern pattern(size, blocks);
+  std::vector<solvers::PatternBlock> blocks;
+  for (int e = 0; e + 1 < size; ++e) blocks.push_back(solvers::PatternBlock::element({e, e + 1}));
+  solvers::SparsePattern pattern(size, blocks);
   Eigen::Matrix2d K;
   K << 1.0, -1.0, -1.0, 1.0;
   pattern.assemble([&](int, Eigen::MatrixXd& K_block) { K_block = K; });

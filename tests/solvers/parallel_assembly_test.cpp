@@ -1,9 +1,9 @@
 // The parallel assembly inside real solves is bitwise the serial one: a pinned flexible pendulum
-// of 240 cubic elements (past core::parallel_assembly_min_blocks, so `automatic` runs in parallel
+// of 240 cubic elements (past solvers::parallel_assembly_min_blocks, so `automatic` runs in parallel
 // too) and a spherical joint, stepped with each execution; and one of 20 elements, which
 // `automatic` evaluates serially or in parallel as it times them (solvers/src/execution_choice.hpp).
-#include <spar/core/sparse_assembly.hpp>
-#include <spar/core/work_sharing.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
+#include <spar/solvers/work_sharing.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 
 #include <catch2/catch.hpp>
@@ -23,7 +23,7 @@ struct Run {
   long iterations = 0;
 };
 
-Run run(core::AssemblyExecution execution, int elements = 240, int steps = 8) {
+Run run(solvers::AssemblyExecution execution, int elements = 240, int steps = 8) {
   test::FlexiblePendulum p = test::flexible_pendulum(elements);
   solvers::GeneralizedAlpha integrator(p.model, std::move(p.joints),
                                        {.time_step = 2.5e-4, .tolerance = 1e-20, .constraint_tolerance = 1e-12,
@@ -45,15 +45,15 @@ bool same_state(const core::Configuration& a, const core::Configuration& b) {
 TEST_CASE("parallel and automatic assembly step a 240-element pinned beam bitwise as serial does",
           "[solvers][openmp]") {
   // Each value of the iteration matrix and each residual entry is the same sum in the same order
-  // in every execution (core::SparsePattern::assemble), so every Newton iterate is identical.
-  if (core::WorkSharing::shared().thread_count() == 1) {
+  // in every execution (solvers::SparsePattern::assemble), so every Newton iterate is identical.
+  if (solvers::WorkSharing::shared().thread_count() == 1) {
     WARN("one thread (OMP_NUM_THREADS or a 1-core machine): every execution is the serial one");
     return;
   }
-  const Run serial = run(core::AssemblyExecution::serial);
-  for (const core::AssemblyExecution execution :
-       {core::AssemblyExecution::parallel, core::AssemblyExecution::automatic}) {
-    CAPTURE(execution == core::AssemblyExecution::parallel ? "parallel" : "automatic");
+  const Run serial = run(solvers::AssemblyExecution::serial);
+  for (const solvers::AssemblyExecution execution :
+       {solvers::AssemblyExecution::parallel, solvers::AssemblyExecution::automatic}) {
+    CAPTURE(execution == solvers::AssemblyExecution::parallel ? "parallel" : "automatic");
     const Run other = run(execution);
     CHECK(same_state(other.state, serial.state));
     CHECK(other.velocity == serial.velocity);
@@ -66,12 +66,12 @@ TEST_CASE("automatic assembly of a 20-element pendulum, serial and parallel as t
           "[solvers][openmp]") {
   // 60 steps take 120 Newton iterations, each an evaluation with a matrix: the first round (nine
   // serial, nine parallel), the 32 evaluations of its choice, the second round and 52 more.
-  if (core::WorkSharing::shared().thread_count() == 1) {
+  if (solvers::WorkSharing::shared().thread_count() == 1) {
     WARN("one thread (OMP_NUM_THREADS or a 1-core machine): every execution is the serial one");
     return;
   }
-  const Run serial = run(core::AssemblyExecution::serial, 20, 60);
-  const Run automatic = run(core::AssemblyExecution::automatic, 20, 60);
+  const Run serial = run(solvers::AssemblyExecution::serial, 20, 60);
+  const Run automatic = run(solvers::AssemblyExecution::automatic, 20, 60);
   CHECK(serial.iterations >= 120);
   CHECK(same_state(automatic.state, serial.state));
   CHECK(automatic.velocity == serial.velocity);

@@ -257,7 +257,7 @@ TEST_CASE("substructuring: a P that is singular where A is not falls back to the
 
 TEST_CASE("substructuring: fixed unknowns are solved as the identity rows they are",
           "[solvers][substructuring]") {
-  // A fixed dof after the Dirichlet conditions (core::SparsePattern::apply_dirichlet): its row and
+  // A fixed dof after the Dirichlet conditions (solvers::SparsePattern::apply_dirichlet): its row and
   // column keep their pattern, with zeros, and a 1 on the diagonal. P leaves those zeros out.
   Frame frame = lattice_frame(3, 6, 1e-3, 2.0);
   const int first_node = 6;

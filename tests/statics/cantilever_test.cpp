@@ -2,6 +2,8 @@
 // Timoshenko cantilever, and the roll-up of a cantilever under a follower end moment into a full
 // and a half circle.
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -18,7 +20,7 @@ TEST_CASE("linear cantilever: tip deflection F L^3/(3EI) + F L/(GA)", "[statics]
   // so the only error is geometric nonlinearity, ~0.1 (F L²/EI)² = 1e-7 relative for this load.
   auto c = test::make_cantilever(4, 3);
   const double F = 10.0, L = 1.0, EI = 1e4, GA = 4e7;
-  c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0.0, F, 0.0)});
+  core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0.0, F, 0.0)});
   const solvers::StaticReport report = solvers::solve_static(c.model, {.load_steps = 1});
   const double reference = F * L * L * L / (3 * EI) + F * L / GA;
   const double deflection = c.model.state().position[c.tip].y();
@@ -32,7 +34,7 @@ namespace {
 /// Rolls a cantilever of length 1 up under a material end moment M = factor · π EI / L about A₃.
 core::Model& roll_up(test::Cantilever& c, double factor, int load_steps) {
   const double M = factor * std::numbers::pi * 1e4;
-  c.model.add_load(core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0.0, 0.0, M),
+  core::add_load(c.model, core::NodalMoment{.node = c.tip, .moment = Eigen::Vector3d(0.0, 0.0, M),
                                      .frame = core::MomentFrame::material});
   solvers::solve_static(c.model, {.load_steps = load_steps});
   return c.model;
@@ -48,7 +50,7 @@ TEST_CASE("roll-up: M = 2 pi EI / L bends the cantilever into a full circle", "[
   for (auto [degree, elements] : {std::pair{2, 256}, std::pair{3, 32}}) {
     auto c = test::make_cantilever(elements, degree);
     const core::Model& model = roll_up(c, 2.0, 8);
-    const core::GeometricallyExactBeam& beam = model.beam(c.beam);
+    const core::GeometricallyExactBeam& beam = core::beam(model, c.beam);
     const double radius = 1.0 / (2 * std::numbers::pi);
     const Eigen::Vector3d center(0.0, radius, 0.0);
     double worst = 0.0;

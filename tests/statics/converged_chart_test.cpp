@@ -1,9 +1,10 @@
 // The Cardona–Géradin chart about the last converged configuration: the pulled-back tangent of
 // the internal forces is symmetric and is the derivative of the pulled-back force.
 #include <spar/core/converged_chart.hpp>
-#include <spar/core/elements/geometrically_exact_beam_element.hpp>
+#include <spar/elements/beam/geometrically_exact_beam_element.hpp>
 #include <spar/core/model.hpp>
 #include <spar/lie/lie.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -14,7 +15,7 @@ using namespace spar;
 
 TEST_CASE("the internal-force tangent in the converged chart is symmetric and exact", "[statics][gebt]") {
   core::Model model;
-  model.add_beam({.centerline = test::straight_centerline(1.0, 2, 3), .stiffness = test::generic_stiffness()});
+  core::add_beam(model, {.centerline = test::straight_centerline(1.0, 2, 3), .stiffness = test::generic_stiffness()});
   test::RandomRotations random(21);
   // A converged state q_n with large rotations, and a chart point φ of up to 0.5 rad per node.
   core::Configuration converged = model.state();
@@ -25,14 +26,13 @@ TEST_CASE("the internal-force tangent in the converged chart is symmetric and ex
     converged.rotation[k] = lie::exp(random.uniform(0, 3) * random.axis()) * converged.rotation[k];
     phi.segment<3>(6 * k + 3) = random.uniform(0, 0.5) * random.axis();
   }
-  auto at = [&](const Eigen::VectorXd& chart) {
+  auto at = [&](const Eigen::VectorXd& chart) {  // q_n ⊕ chart
     core::Configuration q = converged;
-    for (int k = 0; k < q.block_count(); ++k)
-      q.rotation[k] = lie::right_plus(converged.rotation[k], chart.segment<3>(6 * k + 3));
+    q.assign_increment(converged, chart);
     return q;
   };
   // The element's local-increment force and tangent (the element adds the ½ hat(m) term).
-  const core::GeometricallyExactBeamElement element(model.beam(0), 0, 1);
+  const core::GeometricallyExactBeamElement element(core::beam(model, 0), 0, 1);
   auto evaluate = [&](const core::Configuration& q, const Eigen::VectorXd& chart, bool tangent) {
     core::ElementInput in;
     in.q = &q;

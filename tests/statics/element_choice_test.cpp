@@ -3,14 +3,15 @@
 // 1e-6 against Timoshenko's linear closed forms — the tip deflection under a tip force (the
 // issue's table), and the largest deflection error along the beam under a uniform load (whose
 // quartic deflection no cubic represents, so p = 3's locking shows) — with the library's default
-// quadrature (p = 1: selective reduced integration, p ≥ 2: p + 1 Gauss points; core/beam.hpp) and
+// quadrature (p = 1: selective reduced integration, p ≥ 2: p + 1 Gauss points; elements/beam/beam.hpp) and
 // with the other quadrature for p = 1 and p = 2, which shows where the locking comes from.
 #include <spar/core/cross_section.hpp>
-#include <spar/core/loads.hpp>
+#include <spar/elements/loads/loads.hpp>
 #include <spar/core/model.hpp>
 #include <spar/iga/straight_line.hpp>
 #include <spar/solvers/modal_analysis.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -37,7 +38,7 @@ struct Discretization {
 };
 
 /// Steel, E = 210 GPa, ν = 0.3; the section's shear coefficient is the one
-/// CrossSection::rectangle uses, Cowper's κ = 10(1 + ν)/(12 + 11ν) (lib/src/cross_section.cpp).
+/// CrossSection::rectangle uses, Cowper's κ = 10(1 + ν)/(12 + 11ν) (lib/model/src/cross_section.cpp).
 const core::Material steel{.young_modulus = 210e9, .poisson_ratio = 0.3, .density = 7850};
 
 /// Tip compliance of Timoshenko's linear cantilever of length L under a transverse tip force:
@@ -80,17 +81,17 @@ Errors deflection_errors(double slenderness, Discretization d, int elements, Loa
                                  : F * (x * x * (3.0 * L - x) / (6.0 * C.bending_3) + x / C.shear_2);
   };
   core::Model model;
-  const int beam = model.add_beam(
+  const int beam = core::add_beam(model, 
       {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(L, 0, 0), elements, d.degree),
        .stiffness = C,
        .quadrature_points = d.quadrature_points});
-  const core::GeometricallyExactBeam& b = model.beam(beam);
+  const core::GeometricallyExactBeam& b = core::beam(model, beam);
   const int tip = b.node(b.control_point_count() - 1);
   model.fix(b.node(0));
   if (load == Load::tip_force)
-    model.add_load(core::NodalForce{.node = tip, .force = Eigen::Vector3d(0.0, F, 0.0)});
+    core::add_load(model, core::NodalForce{.node = tip, .force = Eigen::Vector3d(0.0, F, 0.0)});
   else
-    model.add_load(core::DistributedForce{.beam = beam, .force_per_length = Eigen::Vector3d(0.0, F, 0.0)});
+    core::add_load(model, core::DistributedForce{.beam = beam, .force_per_length = Eigen::Vector3d(0.0, F, 0.0)});
   solvers::solve_static(model, {.load_steps = 1});
   const double reference = exact(L);
   Errors errors{.tip = (model.state().position[tip].y() - reference) / reference};
@@ -227,7 +228,7 @@ TEST_CASE("element choice: a reduced quadrature keeps the consistent mass exact"
     for (const int elements : {1, 3}) {
       const auto beam = [&](int quadrature_points) {
         core::Model model;
-        model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 0, 0),
+        core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 0, 0),
                                                             elements, reduced.degree),
                         .stiffness = core::SectionStiffness::from(steel, section),
                         .inertia = core::SectionInertia::from(steel, section),
@@ -237,7 +238,7 @@ TEST_CASE("element choice: a reduced quadrature keeps the consistent mass exact"
       core::Model with_reduced = beam(reduced.quadrature_points), with_default = beam(0);
       INFO("p = " << reduced.degree << ", " << reduced.quadrature_points << " points, " << elements << " elements");
       for (int e = 0; e < elements; ++e)
-        CHECK((with_reduced.beam(0).element(e).mass_coefficients - with_default.beam(0).element(e).mass_coefficients)
+        CHECK((core::beam(with_reduced, 0).element(e).mass_coefficients - core::beam(with_default, 0).element(e).mass_coefficients)
                   .norm() <= 1e-15);
       // The free beam: six rigid modes at round-off (≤ 2e-3 rad/s measured, against ≥ 2.4e3 rad/s
       // for the first elastic one), none negative beyond it. Only for p points per element: with

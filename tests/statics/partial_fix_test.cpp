@@ -2,6 +2,8 @@
 // end (rotations fixed, translations free) and with a pinned root (translations fixed, rotations
 // free), against their closed forms.
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -31,7 +33,7 @@ TEST_CASE("Fix::rotations and Fix::translations: guided and pinned ends against 
   SECTION("clamped root, guided tip (Fix::rotations): F L^3/(12 EI) + F L/(GA)") {
     auto c = test::make_cantilever(4, 3);
     c.model.fix(c.tip, core::Fix::rotations);
-    c.model.add_load(core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0.0, F, 0.0)});
+    core::add_load(c.model, core::NodalForce{.node = c.tip, .force = Eigen::Vector3d(0.0, F, 0.0)});
     solvers::solve_static(c.model, {.load_steps = 1});
     const double reference = F * L * L * L / (12 * EI) + F * L / GA;
     const double deflection = c.model.state().position[c.tip].y();
@@ -42,12 +44,12 @@ TEST_CASE("Fix::rotations and Fix::translations: guided and pinned ends against 
   SECTION("pinned root (Fix::translations), guided tip: F L^3/(3 EI) + F L/(GA), root turned F L^2/(2 EI)") {
     // M(s) = −F s from the root, where no moment acts; the tip's reaction moment keeps it level.
     core::Model model;
-    const int b = model.add_beam(
+    const int b = core::add_beam(model, 
         {.centerline = test::straight_centerline(L, 4, 3), .stiffness = test::cantilever_stiffness()});
-    const int root = model.beam(b).node(0), tip = model.beam(b).node(model.beam(b).control_point_count() - 1);
+    const int root = core::beam(model, b).node(0), tip = core::beam(model, b).node(core::beam(model, b).control_point_count() - 1);
     model.fix(root, core::Fix::translations);
     model.fix(tip, core::Fix::rotations);
-    model.add_load(core::NodalForce{.node = tip, .force = Eigen::Vector3d(0.0, F, 0.0)});
+    core::add_load(model, core::NodalForce{.node = tip, .force = Eigen::Vector3d(0.0, F, 0.0)});
     solvers::solve_static(model, {.load_steps = 1});
     const double reference = F * L * L * L / (3 * EI) + F * L / GA, root_angle = F * L * L / (2 * EI);
     const double deflection = model.state().position[tip].y();

@@ -28,19 +28,19 @@ TEST_CASE("sliding joint in statics: a weight on a clamped circular carrier sett
                                 .start_angle = -190.0 * pi / 180.0, .sweep = 200.0 * pi / 180.0};
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection bar = core::CrossSection::rectangle(0.01, 0.01, 0.3);
-  const int carrier = model.add_beam({.centerline = iga::circular_arc(arc),
+  const int carrier = core::add_beam(model, {.centerline = iga::circular_arc(arc),
                                       .stiffness = core::SectionStiffness::from(steel, bar),
                                       .section_axis_hint = Eigen::Vector3d::UnitY()});
-  const core::GeometricallyExactBeam& beam = model.beam(carrier);
+  const core::GeometricallyExactBeam& beam = core::beam(model, carrier);
   model.fix(beam.node(0));
   model.fix(beam.node(beam.control_point_count() - 1));
   // The weight: 1 kg at ζ₀ = 0.4 L₀ on the carrier (a point: its rotation fixed), gravity −Z.
   const double length = 200.0 * pi / 180.0;
-  joints::SlidingJointParameters parameters{.carrier = carrier, .zeta = 0.4 * length, .name = "weight"};
+  joints::SlidingJointParameters parameters{.carrier = core::beam_centerline(model, carrier), .zeta = 0.4 * length, .name = "weight"};
   const double u0 = 0.4;  // the arc's parameter is symmetric about its middle, u = 0.5 (ζ = L₀/2)
   REQUIRE(iga::circular_arc(arc).knots().basis_count() == 7);  // three pieces
   const Eigen::Vector3d start = beam.position_at(model.state(), u0);
-  const int weight = model.rigid_body(model.add_rigid_body(
+  const int weight = core::rigid_body(model, core::add_rigid_body(model, 
       {.center_of_mass = start, .mass = 1.0, .inertia = 1e-4 * Eigen::Matrix3d::Identity()})).node;
   model.fix(weight, core::Fix::rotations);
   model.set_gravity(Eigen::Vector3d(0, 0, -9.81));

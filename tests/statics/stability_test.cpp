@@ -2,9 +2,12 @@
 // perfectly straight column converges on its straight branch at any load; above its Euler loads
 // that branch is unstable, and the report counts the buckling modes below the load.
 #include <spar/core/core.hpp>
+#include <spar/elements/elements.hpp>
 #include <spar/iga/iga.hpp>
 #include <spar/joints/joints.hpp>
 #include <spar/solvers/static_solver.hpp>
+#include <spar/elements/loads/loads.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -23,13 +26,13 @@ solvers::StaticReport compress_column(double factor, bool clamp_by_joint) {
   const core::SectionStiffness C =
       core::SectionStiffness::from(steel, core::CrossSection::rectangle(width, width, steel.poisson_ratio));
   core::Model model;
-  const int b = model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(),
+  const int b = core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(),
                                                                     Eigen::Vector3d(length, 0, 0), 16, 3),
                                 .stiffness = C});
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   const int root = beam.node(0), tip = beam.node(beam.control_point_count() - 1);
   const double euler = std::numbers::pi * std::numbers::pi * C.bending_2 / (4 * length * length);
-  model.add_load(core::NodalForce{.node = tip, .force = Eigen::Vector3d(-factor * euler, 0, 0)});
+  core::add_load(model, core::NodalForce{.node = tip, .force = Eigen::Vector3d(-factor * euler, 0, 0)});
   if (!clamp_by_joint) {
     model.fix(root);
     return solvers::solve_static(model, {.load_steps = 7});
@@ -59,12 +62,12 @@ TEST_CASE("the stability of a state under a moment load is not assessed", "[stat
   // energy criterion does not apply, though the tangent of the roll-up is symmetric.
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   core::Model model;
-  const int b = model.add_beam(
+  const int b = core::add_beam(model, 
       {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 0, 0), 8, 3),
        .stiffness = core::SectionStiffness::from(steel, core::CrossSection::rectangle(0.01, 0.01, 0.3))});
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   model.fix(beam.node(0));
-  model.add_load(core::NodalMoment{.node = beam.node(beam.control_point_count() - 1),
+  core::add_load(model, core::NodalMoment{.node = beam.node(beam.control_point_count() - 1),
                                    .moment = Eigen::Vector3d(0, 0, 100.0), .frame = core::MomentFrame::material});
   CHECK(solvers::solve_static(model).unstable_directions == -1);
 }

@@ -3,7 +3,7 @@
 // and a direct Gauss volume integration of the same St. Venant–Kirchhoff strain energy, written
 // from 001 eqs. (5) and (55) literally (the 3D shape functions S(x, y, z), differentiated by the
 // complex step), independent of the elements' section-integral kernel.
-#include <spar/core/elements/ancf_beam_element.hpp>
+#include <spar/elements/ancf/ancf_beam_element.hpp>
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Beams used across the test suites: a straight beam along +X, and a quarter circle of NURBS arcs.
-#include <spar/core/beam.hpp>
+#include <spar/elements/beam/beam.hpp>
 #include <spar/core/configuration.hpp>
 #include <spar/core/model.hpp>
 #include <spar/iga/knot_vector.hpp>
@@ -43,7 +43,7 @@ inline core::Model slender_free_beam(int elements, int degree) {
   inertia.mass_per_length = 1.0;
   inertia.rotary = Eigen::Vector3d(2e-4, 1e-4, 1e-4).asDiagonal();
   core::Model model;
-  model.add_beam({.centerline = straight_centerline(1.0, elements, degree), .stiffness = C,
+  core::add_beam(model, {.centerline = straight_centerline(1.0, elements, degree), .stiffness = C,
                   .inertia = inertia});
   return model;
 }

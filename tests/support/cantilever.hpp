@@ -1,6 +1,7 @@
 #pragma once
 // A cantilever along +X clamped at the origin: the model used by the statics validation tests.
 #include <spar/core/model.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include "beam_fixtures.hpp"
 
@@ -25,9 +26,9 @@ struct Cantilever {
 
 inline Cantilever make_cantilever(int elements, int degree, double length = 1.0) {
   Cantilever c;
-  c.beam = c.model.add_beam({.centerline = straight_centerline(length, elements, degree),
+  c.beam = core::add_beam(c.model, {.centerline = straight_centerline(length, elements, degree),
                              .stiffness = cantilever_stiffness()});
-  const core::GeometricallyExactBeam& beam = c.model.beam(c.beam);
+  const core::GeometricallyExactBeam& beam = core::beam(c.model, c.beam);
   c.root = beam.node(0);
   c.tip = beam.node(beam.control_point_count() - 1);
   c.model.fix(c.root);
@@ -40,10 +41,10 @@ inline Cantilever make_steel_cantilever(int elements) {
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection section = core::CrossSection::rectangle(0.01, 0.01, 0.3);
   Cantilever c;
-  c.beam = c.model.add_beam({.centerline = straight_centerline(1.0, elements, 3),
+  c.beam = core::add_beam(c.model, {.centerline = straight_centerline(1.0, elements, 3),
                              .stiffness = core::SectionStiffness::from(steel, section),
                              .inertia = core::SectionInertia::from(steel, section)});
-  const core::GeometricallyExactBeam& beam = c.model.beam(c.beam);
+  const core::GeometricallyExactBeam& beam = core::beam(c.model, c.beam);
   c.root = beam.node(0);
   c.tip = beam.node(beam.control_point_count() - 1);
   c.model.fix(c.root);

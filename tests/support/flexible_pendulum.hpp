@@ -6,6 +6,7 @@
 #include <spar/core/model.hpp>
 #include <spar/joints/spherical_joint.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/elements/beam/beam.hpp>
 
 #include <memory>
 
@@ -20,19 +21,19 @@ struct FlexiblePendulum {
   double energy_scale = 0.0;  ///< m g L / 2: the potential energy released down to the vertical
 };
 
-/// The pendulum with `elements` cubic elements; its tip is model.beam(0).position_at(q, 1).
+/// The pendulum with `elements` cubic elements; its tip is core::beam(model, 0).position_at(q, 1).
 /// `stiffening` multiplies Young's modulus (1e6: a practically rigid rod of the same mass).
 inline FlexiblePendulum flexible_pendulum(int elements, double stiffening = 1.0) {
   const double length = 1.0, width = 0.03, thickness = 0.001;
   const core::Material steel{.young_modulus = 2.1e11 * stiffening, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection section = core::CrossSection::rectangle(width, thickness, steel.poisson_ratio);
   FlexiblePendulum p;
-  p.model.add_beam({.centerline = straight_centerline(length, elements, 3),
+  core::add_beam(p.model, {.centerline = straight_centerline(length, elements, 3),
                     .stiffness = core::SectionStiffness::from(steel, section),
                     .inertia = core::SectionInertia::from(steel, section)});
   p.model.set_gravity(Eigen::Vector3d(0.0, 0.0, -9.81));
   p.joints.push_back(std::make_unique<joints::SphericalJoint>(
-      joints::Attachment{.node = p.model.beam(0).node(0), .offset = Eigen::Vector3d::Zero()},
+      joints::Attachment{.node = core::beam(p.model, 0).node(0), .offset = Eigen::Vector3d::Zero()},
       joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, p.model.state()));
   p.mass = steel.density * width * thickness * length;
   p.energy_scale = 0.5 * p.mass * 9.81 * length;

@@ -14,13 +14,13 @@ int main() {
   const int elements = 8, degree = 3;
 
   core::Model model;
-  const int b = model.add_beam(
+  const int b = core::add_beam(model, 
       {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 0, 0), elements, degree),
        .stiffness = core::SectionStiffness::from(steel, square)});
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   const int tip = beam.node(beam.control_point_count() - 1);
   model.fix(beam.node(0));  // clamp the root
-  model.add_load(core::NodalForce{.node = tip, .force = {0, 1, 0}});
+  core::add_load(model, core::NodalForce{.node = tip, .force = {0, 1, 0}});
   solvers::solve_static(model, {.load_steps = 1});
 
   const double EI = 2.1e11 * std::pow(0.01, 4) / 12;
