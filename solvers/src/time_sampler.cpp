@@ -1,8 +1,6 @@
 #include <spar/solvers/time_sampler.hpp>
 
 #include <spar/error.hpp>
-#include <spar/lie/exp.hpp>
-#include <spar/lie/log.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -84,16 +82,7 @@ void TimeSampler::add_sample(double time, const GeneralizedAlpha& integrator) {
     const double s = (time - t_previous_) / h;
     const double h1 = s * s * (3 - 2 * s), h2 = s * (1 - s) * (1 - s), h3 = s * s * (s - 1);
     // D: the step's increment in the chart at q_n.
-    Eigen::VectorXd D(q1.dof_count());
-    for (int b = 0; b < q1.block_count(); ++b) {
-      const core::Block& block = q1.blocks[b];
-      if (q1.is_frame(b)) {
-        D.segment<3>(block.offset) = q1.position[b] - q_previous_.position[b];
-        D.segment<3>(block.offset + 3) = lie::log(q_previous_.rotation[b].transpose() * q1.rotation[b]);
-      } else {
-        D.segment(block.offset, block.size) = q1.vector(b) - q_previous_.vector(b);
-      }
-    }
+    const Eigen::VectorXd D = q1.increment_from(q_previous_);
     const Eigen::VectorXd delta = h1 * D + h * h2 * v_previous_ + h * h3 * v1;
     sample.q.assign_increment(q_previous_, delta);
     sample.velocity = (1 - s) * v_previous_ + s * v1;
