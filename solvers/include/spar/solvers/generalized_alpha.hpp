@@ -12,6 +12,7 @@
 #include <spar/core/model.hpp>
 #include <spar/core/sparse_assembly.hpp>
 #include <spar/joints/constraint.hpp>
+#include <spar/solvers/dynamic_state.hpp>
 #include <spar/solvers/linear_solver.hpp>
 
 #include <Eigen/Core>
@@ -27,8 +28,10 @@ namespace spar::solvers {
 /// How the Newton iterations of a step get their iteration matrix.
 enum class IterationMatrix {
   update,    ///< full Newton: assembled and factorized every iteration
-  frozen,    ///< 003's strategy: the rotation–rotation blocks J_θ of mass, gyroscopic and stiffness
-             ///< matrices taken at t = 0 and kept; the rest updated every iteration
+  frozen,    ///< 003's strategy: the rotation–rotation blocks J_θ of the mass, damping (gyroscopic)
+             ///< and stiffness matrices taken when the method starts and kept, taken anew only when
+             ///< it restarts (initialize(), a structure change, an event, remap); the rest updated
+             ///< every iteration
   modified,  ///< modified Newton: the whole factorization kept across iterations and steps until
              ///< the contraction of the increments slows down
 };
@@ -79,7 +82,7 @@ struct DynamicOptions {
   /// strain energy, and the step after the event is not shorter than ~1 µm over the slider's speed.
   bool locate_events = true;
   double event_tolerance = 1e-6;
-  /// Parallel from core::parallel_assembly_min_blocks elements and joints up; below, with more than
+  /// Parallel from solvers::parallel_assembly_min_blocks elements and joints up; below, with more than
   /// one thread, serial or parallel as the faster of the two is timed during the run (bitwise the
   /// serial result either way; docs/performance.md, "Parallel assembly").
   core::AssemblyExecution assembly = core::AssemblyExecution::automatic;
@@ -203,6 +206,10 @@ public:
   const Eigen::VectorXd& acceleration() const;
   /// The Lagrange multipliers λ (constraint forces), constraint by constraint.
   const Eigen::VectorXd& multipliers() const;
+  /// The state the integrator advances: t, q, v, v̇, the algorithmic acceleration a and λ (a copy
+  /// is a snapshot of the motion). Its q is the model's configuration as the integrator's last
+  /// call left it (configuration() is the model's now).
+  const DynamicState& state() const;
   /// The multipliers of constraint `c` (its equation_count() entries), in the order of the
   /// constructor's list; with joints::reaction or a joint's reaction_in_frame they give the
   /// joint's reaction (docs/joints.md §5). spar::Error for a constraint that does not exist.
