@@ -52,7 +52,7 @@ inline SlidingBeam build_sliding_beam(int carrier_elements, int sliding_elements
       joints::attach_at(s.mass_node, M, q0), q0));
   auto slide = std::make_unique<joints::SlidingJoint>(
       joints::SlidingJointParameters{.slider = joints::attach_at(sliding.node(0), A, model.state()),
-                                     .carrier = s.carrier, .zeta = 0.0, .upper_stop = (B - A).norm(),
+                                     .carrier = core::beam_centerline(model, s.carrier), .zeta = 0.0, .upper_stop = (B - A).norm(),
                                      .name = "slider at A"},
       model);
   s.slide = slide.get();

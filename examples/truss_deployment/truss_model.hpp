@@ -217,7 +217,7 @@ inline TrussUnit build_truss_unit(const TrussParameters& parameters) {
       auto joint = std::make_unique<joints::SlidingJoint>(
           joints::SlidingJointParameters{
               .slider = joints::Attachment{last_node(diagonal)},
-              .carrier = vertical_rod[bay + 1][y],
+              .carrier = core::beam_centerline(model, vertical_rod[bay + 1][y]),
               .zeta = rising ? s : a - s,
               .lower_stop = rising ? std::nullopt : std::optional<double>(0.0),
               .upper_stop = rising ? std::optional<double>(a) : std::nullopt,
