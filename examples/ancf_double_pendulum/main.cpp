@@ -78,11 +78,11 @@ int main(int argc, char** argv) try {
 
   // 3. Ball joints at O (ground) and A (between the links' end nodes).
   solvers::ConstraintList joints;
-  joints.push_back(std::make_unique<joints::AncfSphericalJoint>(
-      joints::ancf_node_point(model.state(), link_oa.nodes.front()), Eigen::Vector3d::Zero(), model.state()));
-  joints.push_back(std::make_unique<joints::AncfSphericalJoint>(
-      joints::ancf_node_point(model.state(), link_oa.nodes.back()),
-      joints::ancf_node_point(model.state(), link_ab.nodes.front()), model.state()));
+  joints.push_back(std::make_unique<joints::PointJoint>(
+      core::ancf_node_point(model.state(), link_oa.nodes.front()), Eigen::Vector3d::Zero(), model.state()));
+  joints.push_back(std::make_unique<joints::PointJoint>(
+      core::ancf_node_point(model.state(), link_oa.nodes.back()),
+      core::ancf_node_point(model.state(), link_ab.nodes.front()), model.state()));
   const double preprocessing =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - preprocessing_start).count();
   const double area = std::numbers::pi * radius * radius;

@@ -74,7 +74,7 @@ int main(int argc, char** argv) try {
                 .method = force == "invariant" ? core::AncfForceMethod::invariant : core::AncfForceMethod::gerstmayr,
                 .material = material, .section = core::SectionIntegrals::circle(radius)});
     // 3. The pin: the root node's position held at the origin.
-    joints.push_back(std::make_unique<joints::AncfSphericalJoint>(joints::ancf_node_point(model.state(), ancf.nodes[0]),
+    joints.push_back(std::make_unique<joints::PointJoint>(core::ancf_node_point(model.state(), ancf.nodes[0]),
                                                                   Eigen::Vector3d::Zero(), model.state()));
   }
   const double preprocessing =

@@ -4,12 +4,12 @@
 /// drivers. Equations: docs/joints.md.
 
 #include <spar/joints/active_until.hpp>
-#include <spar/joints/ancf_spherical_joint.hpp>
 #include <spar/joints/sliding_node_slopes.hpp>
 #include <spar/joints/angle_driver.hpp>
 #include <spar/joints/attachment.hpp>
 #include <spar/joints/clamp_joint.hpp>
 #include <spar/joints/constraint.hpp>
+#include <spar/joints/point_joint.hpp>
 #include <spar/joints/point_kinematics.hpp>
 #include <spar/joints/position_driver.hpp>
 #include <spar/joints/prismatic_joint.hpp>
