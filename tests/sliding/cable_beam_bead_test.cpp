@@ -5,8 +5,8 @@
 #include <spar/core/model.hpp>
 #include <spar/elements/beam/beam.hpp>
 #include <spar/elements/beam/beam_centerline.hpp>
+#include <spar/elements/cable/cable.hpp>
 #include <spar/elements/cable/cable_centerline.hpp>
-#include <spar/elements/cable/rancf_cable_element.hpp>
 #include <spar/elements/rigid_body/rigid_body.hpp>
 #include <spar/iga/straight_line.hpp>
 #include <spar/joints/sliding_joint.hpp>
@@ -54,26 +54,15 @@ std::shared_ptr<const core::Curve> build_carrier(core::Model& model, Carrier kin
     model.fix(beam.node(beam.control_point_count() - 1));
     return core::beam_centerline(model, b);
   }
-  std::vector<int> nodes, cable_elements;
-  for (int i = 0; i <= elements; ++i) {
-    Eigen::VectorXd node = Eigen::VectorXd::Zero(6);
-    node(0) = length * i / elements;
-    node(3) = 1.0;
-    nodes.push_back(model.add_vector(node));
-  }
-  for (int i = 0; i < elements; ++i)
-    cable_elements.push_back(model.add_element(std::make_unique<core::RancfCableElement<3>>(core::RancfCableParameters{
-        .node_a = nodes[i], .node_b = nodes[i + 1], .length = length / elements,
-        .section = {.axial_stiffness = axial_stiffness, .bending_stiffness = bending_stiffness,
-                    .mass_per_length = mass_per_length}})));
+  const core::Cable cable = core::add_cable<3>(
+      model, {.end = length * Eigen::Vector3d::UnitX(), .elements = elements,
+              .section = {.axial_stiffness = axial_stiffness, .bending_stiffness = bending_stiffness,
+                          .mass_per_length = mass_per_length}});
   // Clamped: r and the direction of r_x fixed, its length (the stretch at the end) free. Fixing
   // all of r_x would also hold the end's axial strain at zero, a constraint the beam does not
   // have, whose boundary layer shrinks only like the element (first-order convergence).
-  std::vector<int> fixed;
-  for (const int node : {nodes.front(), nodes.back()})
-    for (const int k : {0, 1, 2, 4, 5}) fixed.push_back(model.state().blocks[node].offset + k);
-  model.set_fixed_dofs(fixed);
-  return core::cable_centerline(model, cable_elements);
+  for (const int node : {cable.nodes.front(), cable.nodes.back()}) model.fix_coordinates(node, {0, 1, 2, 4, 5});
+  return core::cable_centerline(model, cable.elements);
 }
 
 /// The bead's position every 10 steps.
