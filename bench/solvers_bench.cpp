@@ -21,26 +21,27 @@ constexpr int frame_dofs = 6;
 constexpr int nodes_per_element = 4;  // cubic B-spline
 constexpr int element_dofs = frame_dofs * nodes_per_element;
 
-/// A beam of `elements` cubic elements (element e on nodes e..e+3), a clamp (6 multiplier rows on
-/// node 0) and a pin (3 rows on the translations of the last node).
+/// A beam of `elements` cubic elements (element e on nodes e..e+3) and, with `supports`, a clamp
+/// (6 multiplier rows on node 0) and a pin (3 rows on the translations of the last node). Each
+/// multiplier row fixes one dof: its block couples that dof and the multiplier, [0 1; 1 0].
 struct BeamSystem {
   int size;
   std::vector<PatternBlock> blocks;
 };
-BeamSystem beam_system(int elements) {
+BeamSystem beam_system(int elements, bool supports) {
   const int nodes = elements + nodes_per_element - 1;
   const int node_dofs = frame_dofs * nodes;
-  BeamSystem system{node_dofs + 9, {}};
+  BeamSystem system{supports ? node_dofs + 9 : node_dofs, {}};
   for (int e = 0; e < elements; ++e) {
     std::vector<int> dofs;
     for (int dof = frame_dofs * e; dof < frame_dofs * (e + nodes_per_element); ++dof)
       dofs.push_back(dof);
     system.blocks.push_back(PatternBlock::element(dofs));
   }
-  for (int k = 0; k < 6; ++k) system.blocks.push_back(PatternBlock::coupling({node_dofs + k}, {k}));
+  if (!supports) return system;
+  for (int k = 0; k < 6; ++k) system.blocks.push_back(PatternBlock::element({k, node_dofs + k}));
   for (int k = 0; k < 3; ++k)
-    system.blocks.push_back(
-        PatternBlock::coupling({node_dofs + 6 + k}, {node_dofs - frame_dofs + k}));
+    system.blocks.push_back(PatternBlock::element({node_dofs - frame_dofs + k, node_dofs + 6 + k}));
   return system;
 }
 
@@ -84,14 +85,14 @@ private:
 
 /// The assembled iteration matrix of a beam of `elements` elements.
 spar::solvers::SparseMatrix beam_matrix(int elements) {
-  const BeamSystem system = beam_system(elements);
+  const BeamSystem system = beam_system(elements, true);
   spar::solvers::SparsePattern pattern(system.size, system.blocks);
   const ElementKernel kernel;
   pattern.assemble([&](int block_id, Eigen::MatrixXd& K) {
     if (block_id < elements)
       kernel(block_id, K);
     else
-      K.setOnes();  // a constraint Jacobian row: the constrained dof with coefficient 1
+      K << 0.0, 1.0, 1.0, 0.0;  // a constraint Jacobian row (the dof with coefficient 1) and Bᵀ
   });
   return pattern.matrix();
 }
@@ -122,7 +123,7 @@ BENCHMARK_CAPTURE(factorize_and_solve, eigen_lu, spar::solvers::LinearSolverKind
 
 void assemble(benchmark::State& state, spar::solvers::AssemblyExecution execution) {
   // 200 elements of 24 × 24, no constraints.
-  const BeamSystem system = beam_system(200);
+  const BeamSystem system = beam_system(200, false);
   spar::solvers::SparsePattern pattern(system.size, system.blocks);
   const ElementKernel kernel;
   const spar::solvers::BlockCompute compute = [&](int block_id, Eigen::MatrixXd& K) {
@@ -143,7 +144,7 @@ BENCHMARK_CAPTURE(assemble, parallel, spar::solvers::AssemblyExecution::parallel
 void scatter_only(benchmark::State& state, spar::solvers::AssemblyExecution execution) {
   // The assembly overhead alone (scatter; in parallel the block store and the gather): the
   // block is a constant.
-  const BeamSystem system = beam_system(200);
+  const BeamSystem system = beam_system(200, false);
   spar::solvers::SparsePattern pattern(system.size, system.blocks);
   const spar::solvers::BlockCompute compute = [](int, Eigen::MatrixXd& K) { K.setConstant(1.0); };
   for (auto _ : state) {

@@ -14,11 +14,11 @@ namespace {
 
 constexpr const char* pattern_where = "solvers::SparsePattern";
 
-void check_indices(const std::vector<int>& indices, int size, int block_id, const char* role) {
-  for (int index : indices)
-    if (index < 0 || index >= size)
-      throw Error("block " + std::to_string(block_id) + " has " + role + " index " +
-                      std::to_string(index) + " outside [0, " + std::to_string(size) + ")",
+void check_dofs(const PatternBlock& block, int size, int block_id) {
+  for (int dof : block.dofs)
+    if (dof < 0 || dof >= size)
+      throw Error("block " + std::to_string(block_id) + " has dof " + std::to_string(dof) +
+                      " outside [0, " + std::to_string(size) + ")",
                   pattern_where, "give every block global dof indices of the n × n system");
 }
 
@@ -29,54 +29,37 @@ int value_position(const SparseMatrix& A, int row, int col) {
   return static_cast<int>(std::lower_bound(begin, end, row) - A.innerIndexPtr());
 }
 
-/// Throws spar::Error unless K is rows × cols of `block`.
+/// Throws spar::Error unless K is n × n, n the dof count of `block`.
 void check_block_matrix(int block_id, const PatternBlock& block,
                         const Eigen::Ref<const Eigen::MatrixXd>& K) {
-  const auto rows = static_cast<Eigen::Index>(block.rows.size());
-  const auto cols = static_cast<Eigen::Index>(block.cols.size());
-  if (K.rows() != rows || K.cols() != cols)
+  const auto n = static_cast<Eigen::Index>(block.dofs.size());
+  if (K.rows() != n || K.cols() != n)
     throw Error("the matrix of block " + std::to_string(block_id) + " is " +
                     std::to_string(K.rows()) + " × " + std::to_string(K.cols()) +
-                    ", the block is " + std::to_string(rows) + " × " + std::to_string(cols),
-                "solvers::SparsePattern::add_block", "size it rows × cols of the block");
+                    ", the block is " + std::to_string(n) + " × " + std::to_string(n),
+                "solvers::SparsePattern::add_block", "size it n × n, n the block's dof count");
+}
+
+/// Sizes K n × n for `block` and zeroes it.
+void reset_block_matrix(const PatternBlock& block, Eigen::MatrixXd& K) {
+  const auto n = static_cast<Eigen::Index>(block.dofs.size());
+  K.setZero(n, n);
 }
 
 }  // namespace
-
-PatternBlock PatternBlock::element(std::vector<int> dofs) {
-  PatternBlock block;
-  block.rows = dofs;
-  block.cols = std::move(dofs);
-  return block;
-}
-
-PatternBlock PatternBlock::coupling(std::vector<int> rows, std::vector<int> cols) {
-  PatternBlock block;
-  block.rows = std::move(rows);
-  block.cols = std::move(cols);
-  block.with_transpose = true;
-  return block;
-}
 
 SparsePattern::SparsePattern(int size, const std::vector<PatternBlock>& blocks) : blocks_(blocks) {
   if (size < 0)
     throw Error("negative matrix size " + std::to_string(size), pattern_where,
                 "pass the number of dofs of the system");
-  for (int b = 0; b < block_count(); ++b) {
-    check_indices(blocks_[b].rows, size, b, "row");
-    check_indices(blocks_[b].cols, size, b, "column");
-  }
+  for (int b = 0; b < block_count(); ++b) check_dofs(blocks_[b], size, b);
 
-  // 1. The row indices of every column: the diagonal, then every block entry (and its transpose).
+  // 1. The row indices of every column: the diagonal, then every block entry.
   std::vector<std::vector<int>> column_rows(size);
   for (int c = 0; c < size; ++c) column_rows[c].push_back(c);
-  for (const PatternBlock& block : blocks_) {
-    for (int col : block.cols)
-      column_rows[col].insert(column_rows[col].end(), block.rows.begin(), block.rows.end());
-    if (block.with_transpose)
-      for (int row : block.rows)
-        column_rows[row].insert(column_rows[row].end(), block.cols.begin(), block.cols.end());
-  }
+  for (const PatternBlock& block : blocks_)
+    for (int col : block.dofs)
+      column_rows[col].insert(column_rows[col].end(), block.dofs.begin(), block.dofs.end());
   std::size_t nonzeros = 0;
   for (std::vector<int>& rows : column_rows) {
     std::sort(rows.begin(), rows.end());
@@ -100,11 +83,8 @@ SparsePattern::SparsePattern(int size, const std::vector<PatternBlock>& blocks) 
   block_offsets_.reserve(blocks_.size() + 1);
   block_offsets_.push_back(0);
   for (const PatternBlock& block : blocks_) {
-    for (int col : block.cols)
-      for (int row : block.rows) positions_.push_back(value_position(matrix_, row, col));
-    if (block.with_transpose)
-      for (int col : block.cols)
-        for (int row : block.rows) positions_.push_back(value_position(matrix_, col, row));
+    for (int col : block.dofs)
+      for (int row : block.dofs) positions_.push_back(value_position(matrix_, row, col));
     block_offsets_.push_back(positions_.size());
   }
   diagonal_positions_.resize(size);
@@ -124,43 +104,17 @@ void SparsePattern::check_block_id(int block_id, const char* where) const {
 
 void SparsePattern::add_block(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K) {
   check_block_id(block_id, "solvers::SparsePattern::add_block");
-  scatter(block_id, K, K, true);
+  scatter(block_id, K);
 }
 
-void SparsePattern::add_block(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K,
-                              const Eigen::Ref<const Eigen::MatrixXd>& K_transpose_position) {
-  check_block_id(block_id, "solvers::SparsePattern::add_block");
+void SparsePattern::scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K) {
   const PatternBlock& block = blocks_[block_id];
-  if (!block.with_transpose)
-    throw Error("block " + std::to_string(block_id) + " is an element block",
-                "solvers::SparsePattern::add_block",
-                "pass one matrix for an element block; two are for a coupling block");
-  if (K_transpose_position.rows() != static_cast<Eigen::Index>(block.cols.size()) ||
-      K_transpose_position.cols() != static_cast<Eigen::Index>(block.rows.size()))
-    throw Error("the transpose-position matrix of block " + std::to_string(block_id) + " is " +
-                    std::to_string(K_transpose_position.rows()) + " × " +
-                    std::to_string(K_transpose_position.cols()) + ", the block is " +
-                    std::to_string(block.cols.size()) + " × " + std::to_string(block.rows.size()),
-                "solvers::SparsePattern::add_block", "size it cols × rows of the block");
-  scatter(block_id, K, K_transpose_position, false);
-}
-
-void SparsePattern::scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K,
-                            const Eigen::Ref<const Eigen::MatrixXd>& K_transpose_position,
-                            bool transpose_of_K) {
-  const PatternBlock& block = blocks_[block_id];
-  const Eigen::Index rows = static_cast<Eigen::Index>(block.rows.size());
-  const Eigen::Index cols = static_cast<Eigen::Index>(block.cols.size());
   check_block_matrix(block_id, block, K);
+  const auto n = static_cast<Eigen::Index>(block.dofs.size());
   double* values = matrix_.valuePtr();
   const int* position = positions_.data() + block_offsets_[block_id];
-  for (Eigen::Index j = 0; j < cols; ++j)
-    for (Eigen::Index i = 0; i < rows; ++i) values[*position++] += K(i, j);
-  if (!block.with_transpose) return;
-  // `position` now points at the value indices of A(cols[j], rows[i]), in the same (i, j) order.
-  for (Eigen::Index j = 0; j < cols; ++j)
-    for (Eigen::Index i = 0; i < rows; ++i)
-      values[*position++] += transpose_of_K ? K(i, j) : K_transpose_position(j, i);
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i < n; ++i) values[*position++] += K(i, j);
 }
 
 bool SparsePattern::runs_parallel(AssemblyExecution execution) const noexcept {
@@ -186,44 +140,32 @@ void SparsePattern::assemble_serial(const BlockCompute& compute) {
   if (workspaces_.empty()) workspaces_.resize(1);
   Eigen::MatrixXd& K = workspaces_.front();
   for (int block_id = 0; block_id < block_count(); ++block_id) {
-    const PatternBlock& block = blocks_[block_id];
-    K.setZero(static_cast<Eigen::Index>(block.rows.size()),
-              static_cast<Eigen::Index>(block.cols.size()));
+    reset_block_matrix(blocks_[block_id], K);
     compute(block_id, K);
-    scatter(block_id, K, K, true);
+    scatter(block_id, K);
   }
 }
 
 void SparsePattern::build_gather() {
-  // 1. Every block's slot in the block-value store: its rows × cols entries, column-major.
-  value_offsets_.assign(blocks_.size() + 1, 0);
-  for (int b = 0; b < block_count(); ++b)
-    value_offsets_[b + 1] = value_offsets_[b] + blocks_[b].rows.size() * blocks_[b].cols.size();
-  if (value_offsets_.back() > std::numeric_limits<std::uint32_t>::max())
-    throw Error("the blocks hold " + std::to_string(value_offsets_.back()) +
+  // 1. The block-value store: every block's entries, column-major, at its offset in positions_.
+  if (positions_.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Error("the blocks hold " + std::to_string(positions_.size()) +
                     " entries, more than a parallel assembly indexes (2^32)",
                 "solvers::SparsePattern::assemble", "assemble serially (AssemblyExecution::serial)");
-  block_values_.assign(value_offsets_.back(), 0.0);
+  block_values_.assign(positions_.size(), 0.0);
 
   // 2. For every matrix value, its contributions in the order scatter() adds them: blocks in
-  //    order; within a block, the entries (i, j) column by column, then for a coupling block the
-  //    transpose positions in the same order. A counting sort keeps that order within a value.
-  //    positions_ lists exactly these, block after block, so its index s is the order.
+  //    order; within a block, the entries (i, j) column by column. positions_ lists exactly
+  //    these, block after block, so its index s is the order, and block_values_[s] the value
+  //    added at positions_[s]. A counting sort keeps that order within a value.
   const std::size_t values = static_cast<std::size_t>(nonzeros());
   gather_starts_.assign(values + 1, 0);
   for (int position : positions_) ++gather_starts_[static_cast<std::size_t>(position) + 1];
   for (std::size_t k = 0; k < values; ++k) gather_starts_[k + 1] += gather_starts_[k];
   gather_sources_.resize(positions_.size());
   std::vector<std::size_t> next(gather_starts_.begin(), gather_starts_.end() - 1);
-  for (int b = 0; b < block_count(); ++b) {
-    const std::size_t entries = value_offsets_[b + 1] - value_offsets_[b];
-    const std::size_t parts = blocks_[b].with_transpose ? 2 : 1;
-    for (std::size_t s = 0; s < parts * entries; ++s) {
-      const int position = positions_[block_offsets_[b] + s];
-      gather_sources_[next[position]++] =
-          static_cast<std::uint32_t>(value_offsets_[b] + s % entries);
-    }
-  }
+  for (std::size_t s = 0; s < positions_.size(); ++s)
+    gather_sources_[next[positions_[s]]++] = static_cast<std::uint32_t>(s);
 }
 
 // With another process on a core, an OpenMP team (one barrier per colour of a block colouring,
@@ -242,11 +184,10 @@ void SparsePattern::assemble_parallel(const BlockCompute& compute) {
     Eigen::MatrixXd& K = workspaces_[thread];
     for (int block_id = begin; block_id < end; ++block_id) {
       const PatternBlock& block = blocks_[block_id];
-      K.setZero(static_cast<Eigen::Index>(block.rows.size()),
-                static_cast<Eigen::Index>(block.cols.size()));
+      reset_block_matrix(block, K);
       compute(block_id, K);
       check_block_matrix(block_id, block, K);
-      std::copy_n(K.data(), K.size(), block_values_.data() + value_offsets_[block_id]);
+      std::copy_n(K.data(), K.size(), block_values_.data() + block_offsets_[block_id]);
     }
   });
   // Every block is stored: each value is set_zero() and the serial additions, in their order.

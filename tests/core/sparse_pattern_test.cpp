@@ -2,7 +2,6 @@
 // conditions, serial against parallel assembly, and the errors it raises.
 #include <spar/solvers/sparse_assembly.hpp>
 #include <spar/solvers/work_sharing.hpp>
-#include <spar/error.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -18,32 +17,26 @@ using solvers::SparsePattern;
 namespace {
 
 /// A small model: two overlapping elements, one element with a repeated dof, and a constraint
-/// (multiplier row 6) coupling dofs 1 and 4.
+/// on dofs 1 and 4 with multiplier 6, one block over [1, 4, 6] as the solvers build it.
 const int small_size = 8;
 std::vector<PatternBlock> small_blocks() {
   return {PatternBlock::element({0, 1, 2}), PatternBlock::element({2, 3, 4}),
-          PatternBlock::element({5, 3, 5}), PatternBlock::coupling({6}, {1, 4})};
+          PatternBlock::element({5, 3, 5}), PatternBlock::element({1, 4, 6})};
 }
 
 Eigen::MatrixXd random_block(const PatternBlock& block, unsigned seed) {
   std::mt19937 generator(seed);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::MatrixXd K(block.rows.size(), block.cols.size());
+  Eigen::MatrixXd K(block.dofs.size(), block.dofs.size());
   for (Eigen::Index j = 0; j < K.cols(); ++j)
     for (Eigen::Index i = 0; i < K.rows(); ++i) K(i, j) = uniform(generator);
   return K;
 }
 
-/// D(rows, cols) += K and, for a coupling block, D(cols, rows) += K_transpose_position, entry by
-/// entry in the order SparsePattern scatters them.
-void add_dense(Eigen::MatrixXd& D, const PatternBlock& block, const Eigen::MatrixXd& K,
-               const Eigen::MatrixXd& K_transpose_position) {
-  for (std::size_t j = 0; j < block.cols.size(); ++j)
-    for (std::size_t i = 0; i < block.rows.size(); ++i) D(block.rows[i], block.cols[j]) += K(i, j);
-  if (!block.with_transpose) return;
-  for (std::size_t j = 0; j < block.cols.size(); ++j)
-    for (std::size_t i = 0; i < block.rows.size(); ++i)
-      D(block.cols[j], block.rows[i]) += K_transpose_position(j, i);
+/// D(dofs, dofs) += K, entry by entry in the order SparsePattern scatters them.
+void add_dense(Eigen::MatrixXd& D, const PatternBlock& block, const Eigen::MatrixXd& K) {
+  for (std::size_t j = 0; j < block.dofs.size(); ++j)
+    for (std::size_t i = 0; i < block.dofs.size(); ++i) D(block.dofs[i], block.dofs[j]) += K(i, j);
 }
 
 bool same_values(const solvers::SparseMatrix& A, const solvers::SparseMatrix& B) {
@@ -52,8 +45,8 @@ bool same_values(const solvers::SparseMatrix& A, const solvers::SparseMatrix& B)
 }
 
 /// A cubic B-spline beam: element e couples nodes e..e+3 with 6 dofs each (24 × 24 blocks),
-/// followed by `constraints` coupling blocks (one multiplier row each, after the node dofs)
-/// tying the 6 dofs of an evenly spaced node.
+/// followed by `constraints` constraint blocks, each over the 6 dofs of an evenly spaced node and
+/// its one multiplier (numbered after the node dofs): 7 × 7.
 struct BeamChain {
   int size;
   std::vector<PatternBlock> blocks;
@@ -70,7 +63,8 @@ BeamChain beam_chain(int elements, int constraints) {
     const int node = c * (nodes - 1) / std::max(constraints - 1, 1);
     std::vector<int> dofs;
     for (int dof = 6 * node; dof < 6 * node + 6; ++dof) dofs.push_back(dof);
-    chain.blocks.push_back(PatternBlock::coupling({6 * nodes + c}, dofs));
+    dofs.push_back(6 * nodes + c);
+    chain.blocks.push_back(PatternBlock::element(dofs));
   }
   return chain;
 }
@@ -82,11 +76,8 @@ TEST_CASE("SparsePattern holds the diagonal and the blocks' positions, and nothi
   const SparsePattern pattern(small_size, small_blocks());
   Eigen::MatrixXi expected = Eigen::MatrixXi::Identity(small_size, small_size);
   for (const PatternBlock& block : small_blocks())
-    for (int row : block.rows)
-      for (int col : block.cols) {
-        expected(row, col) = 1;
-        if (block.with_transpose) expected(col, row) = 1;
-      }
+    for (int row : block.dofs)
+      for (int col : block.dofs) expected(row, col) = 1;
   const solvers::SparseMatrix& A = pattern.matrix();
   CHECK(A.isCompressed());
   CHECK(A.rows() == small_size);
@@ -111,17 +102,9 @@ TEST_CASE("add_block scatters exactly like a dense assembly by hand", "[core][sp
     for (int b = 0; b < pattern.block_count(); ++b) {
       const Eigen::MatrixXd K = random_block(pattern.block(b), 10 * b + pass);
       pattern.add_block(b, K);
-      add_dense(reference, pattern.block(b), K, K.transpose());
+      add_dense(reference, pattern.block(b), K);
     }
   CHECK(Eigen::MatrixXd(pattern.matrix()) == reference);
-
-  SECTION("a coupling block with different values at the transpose position") {
-    const Eigen::MatrixXd B = random_block(pattern.block(3), 77);
-    const Eigen::MatrixXd B_transpose_position = 3.0 * B.transpose();
-    pattern.add_block(3, B, B_transpose_position);
-    add_dense(reference, pattern.block(3), B, B_transpose_position);
-    CHECK(Eigen::MatrixXd(pattern.matrix()) == reference);
-  }
 
   SECTION("set_zero zeroes the values and keeps the structure") {
     const int nonzeros = pattern.nonzeros();
@@ -215,15 +198,15 @@ TEST_CASE("serial and parallel assembly give bitwise identical matrices",
   Eigen::MatrixXd reference = Eigen::MatrixXd::Zero(chain.size, chain.size);
   for (int b = 0; b < static_cast<int>(chain.blocks.size()); ++b) {
     const Eigen::MatrixXd K = random_block(chain.blocks[b], b);
-    add_dense(reference, chain.blocks[b], K, K.transpose());
+    add_dense(reference, chain.blocks[b], K);
   }
   CHECK(Eigen::MatrixXd(serial.matrix()) == reference);
 }
 
-TEST_CASE("parallel assembly sums repeated dofs and coupling blocks as add_block does",
+TEST_CASE("parallel assembly sums repeated dofs and overlapping blocks as add_block does",
           "[core][sparse_pattern][openmp]") {
-  // Block 2 repeats dof 5 and block 3 is a coupling block: value (5, 5) sums four entries of
-  // one block, (1, 6) and (6, 1) the two positions of one entry.
+  // Block 2 repeats dof 5: value (5, 5) sums four entries of one block. Blocks 0, 3 and 1, 3
+  // overlap: (1, 1) sums entries of blocks 0 and 3, (4, 4) of blocks 1 and 3.
   SparsePattern by_hand(small_size, small_blocks());
   SparsePattern parallel(small_size, small_blocks());
   const std::vector<PatternBlock> blocks = small_blocks();
@@ -265,18 +248,13 @@ TEST_CASE("assemble rethrows a failure of the block computation", "[core][sparse
 TEST_CASE("SparsePattern rejects bad sizes, indices and block ids", "[core][sparse_pattern]") {
   CHECK_THROWS_WITH(SparsePattern(-1, {}), Catch::Contains("negative matrix size -1"));
   CHECK_THROWS_WITH(SparsePattern(4, {PatternBlock::element({0, 4})}),
-                    Catch::Contains("block 0 has row index 4 outside [0, 4)"));
-  CHECK_THROWS_WITH(SparsePattern(4, {PatternBlock::element({1}), PatternBlock::coupling({0}, {-1})}),
-                    Catch::Contains("block 1 has column index -1 outside [0, 4)"));
-  CHECK_THROWS_AS(SparsePattern(4, {PatternBlock::coupling({7}, {0})}), Error);
+                    Catch::Contains("block 0 has dof 4 outside [0, 4)"));
+  CHECK_THROWS_WITH(SparsePattern(4, {PatternBlock::element({1}), PatternBlock::element({0, -1})}),
+                    Catch::Contains("block 1 has dof -1 outside [0, 4)"));
 
   SparsePattern pattern(small_size, small_blocks());
   CHECK_THROWS_WITH(pattern.add_block(4, Eigen::MatrixXd::Zero(1, 1)),
                     Catch::Contains("block id 4 outside [0, 4)"));
   CHECK_THROWS_WITH(pattern.add_block(0, Eigen::MatrixXd::Zero(3, 2)),
                     Catch::Contains("the matrix of block 0 is 3 × 2, the block is 3 × 3"));
-  CHECK_THROWS_WITH(pattern.add_block(0, Eigen::MatrixXd::Zero(3, 3), Eigen::MatrixXd::Zero(3, 3)),
-                    Catch::Contains("block 0 is an element block"));
-  CHECK_THROWS_WITH(pattern.add_block(3, Eigen::MatrixXd::Zero(1, 2), Eigen::MatrixXd::Zero(1, 2)),
-                    Catch::Contains("transpose-position matrix of block 3 is 1 × 2"));
 }

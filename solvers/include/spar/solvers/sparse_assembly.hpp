@@ -3,9 +3,9 @@
 /// Sparse assembly with a pattern computed once.
 ///
 /// A model's iteration matrix has a sparsity pattern fixed by its topology: every element couples
-/// its own dofs (a square "element block"), every constraint couples its multiplier rows with the
-/// dofs it constrains (a rectangular "coupling block" together with its transpose, which gives the
-/// saddle-point matrix [K Bᵀ; B 0] its symmetric structure). SparsePattern builds the compressed
+/// its own dofs, a dense square block dofs × dofs. A constraint is one such block too, over the
+/// dofs it constrains followed by its multipliers: [K_λ Bᵀ; B 0] (solvers/src/system_assembly.cpp),
+/// which gives the saddle-point matrix its symmetric structure. SparsePattern builds the compressed
 /// column structure once from that list of blocks and records, for every entry of every block,
 /// its position in the value array. Assembly then scatters each dense block with no search and no
 /// allocation, and the structure never changes, so a solver's symbolic factorization is reused
@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace spar::solvers {
@@ -25,20 +26,13 @@ namespace spar::solvers {
 /// take without conversion).
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-/// The global dofs of one dense block of the pattern. Build one with `element` or `coupling`.
+/// One dense square block of the pattern: the global dofs it couples, which index both its rows
+/// and its columns (entry (i, j) of the block adds to A(dofs[i], dofs[j])).
 struct PatternBlock {
-  /// The global row indices of the block.
-  std::vector<int> rows;
-  /// The global column indices of the block.
-  std::vector<int> cols;
-  /// True for a coupling block: the transpose position (cols × rows) belongs to the block too.
-  bool with_transpose = false;
+  std::vector<int> dofs;
 
-  /// A square block dofs × dofs: the stiffness, mass or damping coupling of one element.
-  static PatternBlock element(std::vector<int> dofs);
-  /// A rectangular block rows × cols plus its transpose position cols × rows: a constraint
-  /// Jacobian B (rows = its multipliers, cols = the dofs it constrains) and Bᵀ.
-  static PatternBlock coupling(std::vector<int> rows, std::vector<int> cols);
+  /// The block dofs × dofs of one element (or of one constraint, over its dofs and multipliers).
+  static PatternBlock element(std::vector<int> dofs) { return PatternBlock{std::move(dofs)}; }
 };
 
 /// How SparsePattern::assemble runs the blocks. Every execution gives bitwise the same matrix.
@@ -57,8 +51,8 @@ enum class AssemblyExecution {
 /// running on the other core), and the solvers time both (solvers/src/execution_choice.hpp).
 inline constexpr int parallel_assembly_min_blocks = 200;
 
-/// Computes the dense matrix of block `block_id` into `K`, which arrives sized rows × cols of
-/// that block and zeroed. Called concurrently from several threads by a parallel assembly, each
+/// Computes the dense matrix of block `block_id` into `K`, which arrives sized n × n (n = the
+/// block's dof count) and zeroed. Called concurrently from several threads by a parallel assembly, each
 /// with its own `K`, so it must not write shared state.
 using BlockCompute = std::function<void(int block_id, Eigen::MatrixXd& K)>;
 
@@ -71,7 +65,7 @@ using BlockCompute = std::function<void(int block_id, Eigen::MatrixXd& K)>;
 class SparsePattern {
 public:
   /// Builds the structure of an n × n matrix holding every block and the diagonal, with all values
-  /// zero. Throws spar::Error if n < 0, or a block's row or column index is outside [0, n).
+  /// zero. Throws spar::Error if n < 0, or a block's dof is outside [0, n).
   SparsePattern(int size, const std::vector<PatternBlock>& blocks);
 
   /// The number of rows (= columns) of the matrix.
@@ -90,16 +84,9 @@ public:
   void set_zero() noexcept;
 
   /// Adds the dense block K into the matrix at the positions of block `block_id`:
-  /// A(rows, cols) += K, and for a coupling block also A(cols, rows) += Kᵀ. No search, no
-  /// allocation. Throws spar::Error if `block_id` is out of range or K is not rows × cols.
+  /// A(dofs, dofs) += K. No search, no allocation. Throws spar::Error if `block_id` is out of
+  /// range or K is not n × n (n = the block's dof count).
   void add_block(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K);
-
-  /// Adds the two halves of a coupling block whose values are not each other's transpose
-  /// (e.g. B·T and Bᵀ of a Lie-group iteration matrix): A(rows, cols) += K and
-  /// A(cols, rows) += K_transpose_position. Throws spar::Error if `block_id` is out of range or
-  /// not a coupling block, or if K is not rows × cols or K_transpose_position not cols × rows.
-  void add_block(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K,
-                 const Eigen::Ref<const Eigen::MatrixXd>& K_transpose_position);
 
   /// Assembles the whole matrix from every block's `compute(block_id, K)`.
   ///
@@ -131,8 +118,7 @@ public:
   void apply_dirichlet(const std::vector<int>& fixed_dofs, Eigen::Ref<Eigen::VectorXd> rhs);
 
 private:
-  void scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K,
-               const Eigen::Ref<const Eigen::MatrixXd>& K_transpose_position, bool transpose_of_K);
+  void scatter(int block_id, const Eigen::Ref<const Eigen::MatrixXd>& K);
   void check_block_id(int block_id, const char* where) const;
   void assemble_serial(const BlockCompute& compute);
   void assemble_parallel(const BlockCompute& compute);
@@ -141,9 +127,8 @@ private:
 
   SparseMatrix matrix_;
   std::vector<PatternBlock> blocks_;
-  /// positions_[block_offsets_[b] + j·m + i] is the value index of entry (i, j) of block b
-  /// (m = its row count); for a coupling block, the next m·n entries hold the value index of
-  /// A(cols[j], rows[i]) at the same offset j·m + i.
+  /// positions_[block_offsets_[b] + j·n + i] is the value index of entry (i, j) of block b
+  /// (n = its dof count): the entries of every block in the column-major order of its matrix.
   std::vector<int> positions_;
   std::vector<std::size_t> block_offsets_;
   /// The value index of every diagonal entry.
@@ -153,9 +138,9 @@ private:
   std::vector<int> dirichlet_positions_;
   /// One dense workspace per thread of the team, reused across assemblies.
   std::vector<Eigen::MatrixXd> workspaces_;
-  /// Parallel assembly: block b's dense matrix (column-major) at block_values_[value_offsets_[b]].
+  /// Parallel assembly: block b's dense matrix (column-major) at block_values_[block_offsets_[b]],
+  /// so that block_values_[s] lands at positions_[s].
   std::vector<double> block_values_;
-  std::vector<std::size_t> value_offsets_;
   /// Parallel assembly: value k of the matrix is the sum of block_values_[gather_sources_[s]] for
   /// s in [gather_starts_[k], gather_starts_[k+1]), in the order add_block() adds them.
   std::vector<std::size_t> gather_starts_;
