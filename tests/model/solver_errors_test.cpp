@@ -1,5 +1,6 @@
-// Every spar::Error thrown by GeneralizedAlpha (solvers/src/generalized_alpha.cpp), by the
-// assembly it builds (solvers/src/system_assembly.cpp) and by solve_static's options
+// Every spar::Error thrown by GeneralizedAlpha (solvers/src/generalized_alpha.cpp and the files
+// of its jobs: integrator, newton_step, iteration_matrix_strategy, initial_assembly,
+// structure_changes), by the assembly it builds (solvers/src/system_assembly.cpp) and by solve_static's options
 // (solvers/src/static_solver.cpp), reached through the public API, with the words of its what,
 // where and fix (issue 16; docs/errors.md, "Solvers"). The failures inside a step and their
 // cut-backs are in newton_failures_test.cpp; elsewhere, with the same throw reached by another
@@ -79,7 +80,7 @@ TEST_CASE("every error of the integrator and of the static solver's options name
   constexpr double infinite = std::numeric_limits<double>::infinity();
   const std::string ga = "solvers::GeneralizedAlpha";
   const std::vector<Case> cases = {
-      // Options (generalized_alpha.cpp, iteration_matrix_from_string, from_spectral_radius,
+      // Options (generalized_alpha.cpp and integrator.cpp, iteration_matrix_from_string, from_spectral_radius,
       // validated_parameters, check_units).
       {"an unknown strategy", [] { solvers::iteration_matrix_from_string("newton"); },
        "unknown iteration-matrix strategy 'newton'", "solvers::iteration_matrix_from_string",
