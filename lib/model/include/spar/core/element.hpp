@@ -70,8 +70,10 @@ struct ElementOutput {
   Eigen::MatrixXd damping;
   Eigen::MatrixXd mass;
   ElementEnergy energy;
-  /// With `energy`: the external generalized force f_ext of loads that have no potential here
-  /// (its part of −r), whose work the integrator books (docs/dynamics.md D8). Zero otherwise.
+  /// With `energy`: the external generalized force f_ext of the element's loads (its part of −r),
+  /// which report no potential in `energy`: the integrator books their work (docs/dynamics.md D8).
+  /// reset() sizes and zeroes it on an energy request only: on any other it keeps what an earlier
+  /// call left (or is empty), and an element writes it only when `energy` is asked for.
   Eigen::VectorXd external_force;
 
   /// Sizes and zeroes what `request` asks for (and the residual always), for an element with n
