@@ -100,7 +100,7 @@ public:
   /// Σ Bᵀλ of the constraints at the last evaluate() (global tangent layout): the constraint
   /// forces on the blocks are its negative.
   const Eigen::VectorXd& constraint_force() const { return constraint_force_; }
-  /// The constraint's Jacobian B (m × n) of the last evaluate(), before the chart's map.
+  /// The constraints given to the constructor, in the order of their multipliers.
   const std::vector<joints::Constraint*>& constraints() const { return constraints_; }
 
 private:
