@@ -233,6 +233,7 @@ TEST_CASE("curves of every family refuse what they cannot be built from", "[slid
                     Catch::Contains("not a spatial fixed-length RANCF"));
   CHECK_THROWS_AS(core::beam_centerline(c.model, beam + 1), Error);
   CHECK_THROWS_AS(core::rigid_body_rail(c.model, 0, iga::quarter_circle<3>(1.0)), Error);
+  CHECK_THROWS_WITH(core::RigidRail(c.model, 0, iga::quarter_circle<3>(1.0)), Catch::Contains("frame"));  // a cable node
   const core::CurvePoint p = c.curve->point(c.model.state(), 0.1, 0);
   CHECK_THROWS_AS(c.curve->point(c.model.state(), std::numeric_limits<double>::quiet_NaN(), 0), Error);
   CHECK_THROWS_AS(c.curve->point(c.model.state(), 0.1, 3), Error);

@@ -12,7 +12,9 @@
 
 namespace spar::core {
 
-RigidRail::RigidRail(int frame, iga::NurbsCurve<3> curve) : frame_(frame), curve_(std::move(curve)) {
+RigidRail::RigidRail(const Model& model, int frame, iga::NurbsCurve<3> curve)
+    : frame_(frame), curve_(std::move(curve)) {
+  model.check_frame(frame, "core::RigidRail");
   const iga::KnotVector& U = curve_.knots();
   length_ = curve_.arc_length(U.first(), U.last());
   if (!(length_ > 0.0) || !std::isfinite(length_))
@@ -83,7 +85,7 @@ void RigidRail::compute_acceleration_terms(const Configuration& q, const CurvePo
 }
 
 std::shared_ptr<const Curve> rigid_body_rail(const Model& model, int body, const iga::NurbsCurve<3>& curve) {
-  return std::make_shared<RigidRail>(rigid_body(model, body).node, curve);
+  return std::make_shared<RigidRail>(model, rigid_body(model, body).node, curve);
 }
 
 }  // namespace spar::core

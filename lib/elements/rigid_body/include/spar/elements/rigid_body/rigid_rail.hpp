@@ -25,8 +25,9 @@ namespace spar::core {
 
 class RigidRail final : public Curve {
 public:
-  /// The curve `curve` (body coordinates) fixed in frame block `frame`.
-  RigidRail(int frame, iga::NurbsCurve<3> curve);
+  /// The curve `curve` (body coordinates) fixed in frame block `frame` of `model`. Throws
+  /// spar::Error for a block that is not a frame of the model or a curve of zero length.
+  RigidRail(const Model& model, int frame, iga::NurbsCurve<3> curve);
 
   /// L₀.
   double length() const override { return length_; }
