@@ -13,30 +13,31 @@ ActiveUntil::ActiveUntil(std::unique_ptr<Constraint> constraint, Condition relea
   if (!release_) throw Error("no release condition", where, "pass a callable (q, t) -> bool");
 }
 
-// While released the constraint has no equations: the evaluations below receive empty outputs
-// and have nothing to write.
+// While active, the wrapped constraint's own evaluations, through its public interface (whose
+// checks repeat ours: a second pass over the same few blocks). While released the constraint has
+// no equations: the evaluations below receive empty outputs and have nothing to write.
 
-void ActiveUntil::value(const core::Configuration& q, double t, Eigen::Ref<Eigen::VectorXd> phi) const {
+void ActiveUntil::compute_value(const core::Configuration& q, double t, Eigen::Ref<Eigen::VectorXd> phi) const {
   if (active_) constraint_->value(q, t, phi);
 }
 
-void ActiveUntil::jacobian(const core::Configuration& q, double t, Eigen::Ref<Eigen::MatrixXd> B) const {
+void ActiveUntil::compute_jacobian(const core::Configuration& q, double t, Eigen::Ref<Eigen::MatrixXd> B) const {
   if (active_) constraint_->jacobian(q, t, B);
 }
 
-void ActiveUntil::multiplier_tangent(const core::Configuration& q, double t,
-                                     const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                     Eigen::Ref<Eigen::MatrixXd> K) const {
+void ActiveUntil::compute_multiplier_tangent(const core::Configuration& q, double t,
+                                             const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                             Eigen::Ref<Eigen::MatrixXd> K) const {
   if (active_) constraint_->multiplier_tangent(q, t, lambda, K);
 }
 
-void ActiveUntil::acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity,
-                                     double t, Eigen::Ref<Eigen::VectorXd> c) const {
+void ActiveUntil::compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity,
+                                             double t, Eigen::Ref<Eigen::VectorXd> c) const {
   if (active_) constraint_->acceleration_terms(q, velocity, t, c);
 }
 
-void ActiveUntil::time_derivative(const core::Configuration& q, double t,
-                                  Eigen::Ref<Eigen::VectorXd> phi_t) const {
+void ActiveUntil::compute_time_derivative(const core::Configuration& q, double t,
+                                          Eigen::Ref<Eigen::VectorXd> phi_t) const {
   if (active_) constraint_->time_derivative(q, t, phi_t);
 }
 

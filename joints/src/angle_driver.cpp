@@ -1,7 +1,5 @@
 #include <spar/joints/angle_driver.hpp>
 
-#include "evaluation_checks.hpp"
-
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -30,28 +28,24 @@ AngleDriver::DrivenFrame AngleDriver::driven_frame(double f) const {
   return {.d = d, .w = axis_.cross(d)};
 }
 
-void AngleDriver::value(const core::Configuration& q, double t,
-                        Eigen::Ref<Eigen::VectorXd> phi) const {
-  detail::begin_vector_output(*this, q, phi, name);
+void AngleDriver::compute_value(const core::Configuration& q, double t,
+                                Eigen::Ref<Eigen::VectorXd> phi) const {
   phi(0) = vector_.direction(q).dot(driven_frame(angle_.value(t)).w);
 }
 
-void AngleDriver::jacobian(const core::Configuration& q, double t,
-                           Eigen::Ref<Eigen::MatrixXd> B) const {
-  detail::begin_jacobian(*this, q, B, name);
+void AngleDriver::compute_jacobian(const core::Configuration& q, double t,
+                                   Eigen::Ref<Eigen::MatrixXd> B) const {
   vector_.add_jacobian_along(q, driven_frame(angle_.value(t)).w, B, 0);
 }
 
-void AngleDriver::multiplier_tangent(const core::Configuration& q, double t,
-                                     const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                     Eigen::Ref<Eigen::MatrixXd> K) const {
-  detail::begin_multiplier_tangent(*this, q, lambda, K, name);
+void AngleDriver::compute_multiplier_tangent(const core::Configuration& q, double t,
+                                             const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                             Eigen::Ref<Eigen::MatrixXd> K) const {
   vector_.add_multiplier_tangent_along(q, driven_frame(angle_.value(t)).w, lambda(0), K);
 }
 
-void AngleDriver::acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity,
-                                     double t, Eigen::Ref<Eigen::VectorXd> c) const {
-  detail::begin_acceleration_terms(*this, q, velocity, c, name);
+void AngleDriver::compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity,
+                                             double t, Eigen::Ref<Eigen::VectorXd> c) const {
   const DrivenFrame frame = driven_frame(angle_.value(t));
   const double rate = angle_.first_derivative(t);
   // ḋ = f′ n × d = f′ w, so ẇ = n × ḋ = −f′ d (d ⊥ n) and ẅ = −f″ d − f′² w (eq. J22).
@@ -62,9 +56,8 @@ void AngleDriver::acceleration_terms(const core::Configuration& q, const Eigen::
          2 * vector_.rate(q, velocity).dot(w_rate) + vector_.direction(q).dot(w_acceleration);
 }
 
-void AngleDriver::time_derivative(const core::Configuration& q, double t,
-                                  Eigen::Ref<Eigen::VectorXd> phi_t) const {
-  detail::begin_vector_output(*this, q, phi_t, name);
+void AngleDriver::compute_time_derivative(const core::Configuration& q, double t,
+                                          Eigen::Ref<Eigen::VectorXd> phi_t) const {
   phi_t(0) =
       -angle_.first_derivative(t) * vector_.direction(q).dot(driven_frame(angle_.value(t)).d);
 }

@@ -1,7 +1,5 @@
 #include <spar/joints/clamp_joint.hpp>
 
-#include "evaluation_checks.hpp"
-
 namespace spar::joints {
 
 namespace {
@@ -17,31 +15,27 @@ ClampJoint::ClampJoint(const Attachment& a, const Attachment& b, const JointFram
       points_(AttachedPoint(frames.a, a.offset), AttachedPoint(frames.b, b.offset)),
       rotation_lock_(frames.a, frames.b, q0) {}
 
-void ClampJoint::value(const core::Configuration& q, double /*t*/,
-                       Eigen::Ref<Eigen::VectorXd> phi) const {
-  detail::begin_vector_output(*this, q, phi, name);
+void ClampJoint::compute_value(const core::Configuration& q, double /*t*/,
+                               Eigen::Ref<Eigen::VectorXd> phi) const {
   phi.head<3>() = points_.value(q);
   phi.tail<3>() = rotation_lock_.value(q);
 }
 
-void ClampJoint::jacobian(const core::Configuration& q, double /*t*/,
-                          Eigen::Ref<Eigen::MatrixXd> B) const {
-  detail::begin_jacobian(*this, q, B, name);
+void ClampJoint::compute_jacobian(const core::Configuration& q, double /*t*/,
+                                  Eigen::Ref<Eigen::MatrixXd> B) const {
   points_.add_jacobian(q, B, 0);
   rotation_lock_.add_jacobian(q, B, 3);
 }
 
-void ClampJoint::multiplier_tangent(const core::Configuration& q, double /*t*/,
-                                    const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                    Eigen::Ref<Eigen::MatrixXd> K) const {
-  detail::begin_multiplier_tangent(*this, q, lambda, K, name);
+void ClampJoint::compute_multiplier_tangent(const core::Configuration& q, double /*t*/,
+                                            const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                            Eigen::Ref<Eigen::MatrixXd> K) const {
   points_.add_multiplier_tangent(q, lambda.head<3>(), K);
   rotation_lock_.add_multiplier_tangent(q, lambda.tail<3>(), K);
 }
 
-void ClampJoint::acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity,
-                                    double /*t*/, Eigen::Ref<Eigen::VectorXd> c) const {
-  detail::begin_acceleration_terms(*this, q, velocity, c, name);
+void ClampJoint::compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity,
+                                            double /*t*/, Eigen::Ref<Eigen::VectorXd> c) const {
   c.head<3>() = points_.acceleration_terms(q, velocity);
   c.tail<3>() = rotation_lock_.acceleration_terms(q, velocity);
 }

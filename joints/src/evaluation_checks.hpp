@@ -1,33 +1,45 @@
 #pragma once
-// Shape checks shared by every joint's evaluation functions: the configuration holds the joint's
-// nodes and the caller-sized outputs have the shapes of the Constraint interface. Each function
-// raises spar::Error naming `where` on a mismatch, and otherwise zeroes the output so the joint can
-// accumulate its building blocks into it. Nothing allocates unless an error is raised.
+// The boundary checks of the Constraint interface's public evaluations (constraint.hpp; called by
+// constraint.cpp before a joint's compute_*): the configuration holds the constraint's blocks, the
+// time is finite, the caller-sized outputs have the interface's shapes m, m × n and n × n (n = the
+// tangent size of blocks() in q: 6 per frame block, its size per vector block), the velocity has
+// the configuration's size and finite entries at the constraint's blocks, the multipliers have m
+// finite entries. Each raises spar::InputError — spar::Error for a non-finite velocity or
+// multiplier, which inside a solver comes from an iteration — whose `where` names the evaluation
+// and the constraint's type. Nothing allocates unless an error is raised.
 #include <spar/core/configuration.hpp>
 #include <spar/joints/constraint.hpp>
 
 #include <Eigen/Core>
 
-#include <string_view>
+#include <string>
 
 namespace spar::joints::detail {
 
-/// Checks q and phi (m entries); zeroes phi. Used for value and time_derivative.
-void begin_vector_output(const Constraint& constraint, const core::Configuration& q,
-                         Eigen::Ref<Eigen::VectorXd> out, std::string_view where);
+/// The constraint's C++ type, demangled ("spar::joints::SphericalJoint"): the interface has no name
+/// of its own, and a user's joint is named this way too.
+std::string type_name(const Constraint& constraint);
 
-/// Checks q and B (m × 6k); zeroes B.
-void begin_jacobian(const Constraint& constraint, const core::Configuration& q,
-                    Eigen::Ref<Eigen::MatrixXd> B, std::string_view where);
+/// Checks that q holds every block of the constraint and that t is finite; returns n, the tangent
+/// size of the blocks in q. `evaluation` names the public function ("jacobian").
+Eigen::Index check_configuration(const Constraint& constraint, const core::Configuration& q, double t,
+                                 const char* evaluation);
 
-/// Checks q, λ (m entries) and K (6k × 6k); zeroes K.
-void begin_multiplier_tangent(const Constraint& constraint, const core::Configuration& q,
-                              const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                              Eigen::Ref<Eigen::MatrixXd> K, std::string_view where);
+/// Checks that a vector output or input (`field`, e.g. "the output vector") has `expected` entries.
+void check_size(const Constraint& constraint, Eigen::Index size, Eigen::Index expected, const char* field,
+                const char* evaluation);
 
-/// Checks q, the global velocity (6 per node of q) and c (m entries); zeroes c.
-void begin_acceleration_terms(const Constraint& constraint, const core::Configuration& q,
-                              const Eigen::VectorXd& velocity, Eigen::Ref<Eigen::VectorXd> c,
-                              std::string_view where);
+/// Checks that the matrix output `field` ("the Jacobian B") is expected_rows × expected_cols.
+void check_shape(const Constraint& constraint, const Eigen::Ref<const Eigen::MatrixXd>& matrix,
+                 Eigen::Index expected_rows, Eigen::Index expected_cols, const char* field, const char* evaluation);
+
+/// Checks that λ has equation_count() entries, all finite.
+void check_multipliers(const Constraint& constraint, const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                       const char* evaluation);
+
+/// Checks that the global velocity has q.dof_count() entries, finite at the constraint's blocks
+/// (which check_configuration has found in q).
+void check_velocity(const Constraint& constraint, const core::Configuration& q, const Eigen::VectorXd& velocity,
+                    const char* evaluation);
 
 }  // namespace spar::joints::detail

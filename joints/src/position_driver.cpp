@@ -1,7 +1,5 @@
 #include <spar/joints/position_driver.hpp>
 
-#include "evaluation_checks.hpp"
-
 #include <utility>
 
 namespace spar::joints {
@@ -20,35 +18,30 @@ PositionDriver::PositionDriver(const Attachment& a, const Eigen::Vector3d& direc
   nodes_ = {a.node};
 }
 
-void PositionDriver::value(const core::Configuration& q, double t,
-                           Eigen::Ref<Eigen::VectorXd> phi) const {
-  detail::begin_vector_output(*this, q, phi, name);
+void PositionDriver::compute_value(const core::Configuration& q, double t,
+                                   Eigen::Ref<Eigen::VectorXd> phi) const {
   phi(0) = direction_.dot(point_.position(q)) - reference_ - f_.value(t);
 }
 
-void PositionDriver::jacobian(const core::Configuration& q, double /*t*/,
-                              Eigen::Ref<Eigen::MatrixXd> B) const {
-  detail::begin_jacobian(*this, q, B, name);
+void PositionDriver::compute_jacobian(const core::Configuration& q, double /*t*/,
+                                      Eigen::Ref<Eigen::MatrixXd> B) const {
   point_.add_jacobian<1>(q, direction_.transpose(), B, 0);
 }
 
-void PositionDriver::multiplier_tangent(const core::Configuration& q, double /*t*/,
-                                        const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                        Eigen::Ref<Eigen::MatrixXd> K) const {
-  detail::begin_multiplier_tangent(*this, q, lambda, K, name);
+void PositionDriver::compute_multiplier_tangent(const core::Configuration& q, double /*t*/,
+                                                const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                                Eigen::Ref<Eigen::MatrixXd> K) const {
   point_.add_multiplier_tangent(q, lambda(0) * direction_, K);
 }
 
-void PositionDriver::acceleration_terms(const core::Configuration& q,
-                                        const Eigen::VectorXd& velocity, double t,
-                                        Eigen::Ref<Eigen::VectorXd> c) const {
-  detail::begin_acceleration_terms(*this, q, velocity, c, name);
+void PositionDriver::compute_acceleration_terms(const core::Configuration& q,
+                                                const Eigen::VectorXd& velocity, double t,
+                                                Eigen::Ref<Eigen::VectorXd> c) const {
   c(0) = direction_.dot(point_.acceleration_terms(q, velocity)) - f_.second_derivative(t);
 }
 
-void PositionDriver::time_derivative(const core::Configuration& q, double t,
-                                     Eigen::Ref<Eigen::VectorXd> phi_t) const {
-  detail::begin_vector_output(*this, q, phi_t, name);
+void PositionDriver::compute_time_derivative(const core::Configuration& /*q*/, double t,
+                                             Eigen::Ref<Eigen::VectorXd> phi_t) const {
   phi_t(0) = -f_.first_derivative(t);
 }
 

@@ -1,7 +1,5 @@
 #include <spar/joints/prismatic_joint.hpp>
 
-#include "evaluation_checks.hpp"
-
 #include <Eigen/Geometry>
 
 namespace spar::joints {
@@ -30,32 +28,28 @@ PrismaticJoint::PrismaticJoint(const Attachment& a, const Eigen::Vector3d& line_
   if (lock_rotation) rotation_lock_.emplace(point_.frame(), JointFrame{}, q0);
 }
 
-void PrismaticJoint::value(const core::Configuration& q, double /*t*/,
-                           Eigen::Ref<Eigen::VectorXd> phi) const {
-  detail::begin_vector_output(*this, q, phi, name);
+void PrismaticJoint::compute_value(const core::Configuration& q, double /*t*/,
+                                   Eigen::Ref<Eigen::VectorXd> phi) const {
   phi.head<2>() = normals_ * (point_.position(q) - line_point_);
   if (rotation_lock_) phi.segment<3>(2) = rotation_lock_->value(q);
 }
 
-void PrismaticJoint::jacobian(const core::Configuration& q, double /*t*/,
-                              Eigen::Ref<Eigen::MatrixXd> B) const {
-  detail::begin_jacobian(*this, q, B, name);
+void PrismaticJoint::compute_jacobian(const core::Configuration& q, double /*t*/,
+                                      Eigen::Ref<Eigen::MatrixXd> B) const {
   point_.add_jacobian<2>(q, normals_, B, 0);
   if (rotation_lock_) rotation_lock_->add_jacobian(q, B, 2);
 }
 
-void PrismaticJoint::multiplier_tangent(const core::Configuration& q, double /*t*/,
-                                        const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                        Eigen::Ref<Eigen::MatrixXd> K) const {
-  detail::begin_multiplier_tangent(*this, q, lambda, K, name);
+void PrismaticJoint::compute_multiplier_tangent(const core::Configuration& q, double /*t*/,
+                                                const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                                Eigen::Ref<Eigen::MatrixXd> K) const {
   point_.add_multiplier_tangent(q, normals_.transpose() * lambda.head<2>(), K);
   if (rotation_lock_) rotation_lock_->add_multiplier_tangent(q, lambda.segment<3>(2), K);
 }
 
-void PrismaticJoint::acceleration_terms(const core::Configuration& q,
-                                        const Eigen::VectorXd& velocity, double /*t*/,
-                                        Eigen::Ref<Eigen::VectorXd> c) const {
-  detail::begin_acceleration_terms(*this, q, velocity, c, name);
+void PrismaticJoint::compute_acceleration_terms(const core::Configuration& q,
+                                                const Eigen::VectorXd& velocity, double /*t*/,
+                                                Eigen::Ref<Eigen::VectorXd> c) const {
   c.head<2>() = normals_ * point_.acceleration_terms(q, velocity);
   if (rotation_lock_) c.segment<3>(2) = rotation_lock_->acceleration_terms(q, velocity);
 }

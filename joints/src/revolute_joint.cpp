@@ -1,7 +1,5 @@
 #include <spar/joints/revolute_joint.hpp>
 
-#include "evaluation_checks.hpp"
-
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -32,32 +30,28 @@ RevoluteJoint::RevoluteJoint(const Attachment& a, const Attachment& b, const Eig
   axis_products_ = {DotProduct(axis_a_, normals_b_[0]), DotProduct(axis_a_, normals_b_[1])};
 }
 
-void RevoluteJoint::value(const core::Configuration& q, double /*t*/,
-                          Eigen::Ref<Eigen::VectorXd> phi) const {
-  detail::begin_vector_output(*this, q, phi, name);
+void RevoluteJoint::compute_value(const core::Configuration& q, double /*t*/,
+                                  Eigen::Ref<Eigen::VectorXd> phi) const {
   phi.head<3>() = points_.value(q);
   for (int i = 0; i < 2; ++i) phi(3 + i) = axis_products_[i].value(q);
 }
 
-void RevoluteJoint::jacobian(const core::Configuration& q, double /*t*/,
-                             Eigen::Ref<Eigen::MatrixXd> B) const {
-  detail::begin_jacobian(*this, q, B, name);
+void RevoluteJoint::compute_jacobian(const core::Configuration& q, double /*t*/,
+                                     Eigen::Ref<Eigen::MatrixXd> B) const {
   points_.add_jacobian(q, B, 0);
   for (int i = 0; i < 2; ++i) axis_products_[i].add_jacobian(q, B, 3 + i);
 }
 
-void RevoluteJoint::multiplier_tangent(const core::Configuration& q, double /*t*/,
-                                       const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                       Eigen::Ref<Eigen::MatrixXd> K) const {
-  detail::begin_multiplier_tangent(*this, q, lambda, K, name);
+void RevoluteJoint::compute_multiplier_tangent(const core::Configuration& q, double /*t*/,
+                                               const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                               Eigen::Ref<Eigen::MatrixXd> K) const {
   points_.add_multiplier_tangent(q, lambda.head<3>(), K);
   for (int i = 0; i < 2; ++i) axis_products_[i].add_multiplier_tangent(q, lambda(3 + i), K);
 }
 
-void RevoluteJoint::acceleration_terms(const core::Configuration& q,
-                                       const Eigen::VectorXd& velocity, double /*t*/,
-                                       Eigen::Ref<Eigen::VectorXd> c) const {
-  detail::begin_acceleration_terms(*this, q, velocity, c, name);
+void RevoluteJoint::compute_acceleration_terms(const core::Configuration& q,
+                                               const Eigen::VectorXd& velocity, double /*t*/,
+                                               Eigen::Ref<Eigen::VectorXd> c) const {
   c.head<3>() = points_.acceleration_terms(q, velocity);
   for (int i = 0; i < 2; ++i) c(3 + i) = axis_products_[i].acceleration_terms(q, velocity);
 }

@@ -26,7 +26,7 @@ int SlidingNodeSlopes::equation_count() const {
   return dimension_ + (condition_ == SlopeCondition::continuous ? dimension_ : 1);
 }
 
-void SlidingNodeSlopes::value(const core::Configuration& q, double, Eigen::Ref<Eigen::VectorXd> phi) const {
+void SlidingNodeSlopes::compute_value(const core::Configuration& q, double, Eigen::Ref<Eigen::VectorXd> phi) const {
   const int d = dimension_;
   const auto a = q.vector(blocks_[0]), b = q.vector(blocks_[1]);
   phi.head(d) = a.head(d) - b.head(d);
@@ -36,9 +36,8 @@ void SlidingNodeSlopes::value(const core::Configuration& q, double, Eigen::Ref<E
     phi(d) = 0.5 * (a.tail(d).squaredNorm() - b.tail(d).squaredNorm());
 }
 
-void SlidingNodeSlopes::jacobian(const core::Configuration& q, double, Eigen::Ref<Eigen::MatrixXd> B) const {
+void SlidingNodeSlopes::compute_jacobian(const core::Configuration& q, double, Eigen::Ref<Eigen::MatrixXd> B) const {
   const int d = dimension_;
-  B.setZero();
   for (int i = 0; i < d; ++i) {
     B(i, i) = 1.0;
     B(i, 2 * d + i) = -1.0;
@@ -54,10 +53,9 @@ void SlidingNodeSlopes::jacobian(const core::Configuration& q, double, Eigen::Re
   }
 }
 
-void SlidingNodeSlopes::multiplier_tangent(const core::Configuration&, double,
-                                           const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                           Eigen::Ref<Eigen::MatrixXd> K) const {
-  K.setZero();
+void SlidingNodeSlopes::compute_multiplier_tangent(const core::Configuration&, double,
+                                                   const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                                   Eigen::Ref<Eigen::MatrixXd> K) const {
   if (condition_ == SlopeCondition::continuous) return;
   const int d = dimension_;
   for (int i = 0; i < d; ++i) {
@@ -66,9 +64,8 @@ void SlidingNodeSlopes::multiplier_tangent(const core::Configuration&, double,
   }
 }
 
-void SlidingNodeSlopes::acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double,
-                                           Eigen::Ref<Eigen::VectorXd> c) const {
-  c.setZero();
+void SlidingNodeSlopes::compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity,
+                                                   double, Eigen::Ref<Eigen::VectorXd> c) const {
   if (condition_ == SlopeCondition::continuous) return;
   const int d = dimension_;
   const auto rate = [&](int block) { return velocity.segment(q.blocks[block].offset + d, d); };

@@ -1,7 +1,5 @@
 #include <spar/joints/spherical_joint.hpp>
 
-#include "evaluation_checks.hpp"
-
 namespace spar::joints {
 
 namespace {
@@ -16,29 +14,25 @@ SphericalJoint::SphericalJoint(const Attachment& a, const Attachment& b, const J
     : nodes_(frames.nodes),
       points_(AttachedPoint(frames.a, a.offset), AttachedPoint(frames.b, b.offset)) {}
 
-void SphericalJoint::value(const core::Configuration& q, double /*t*/,
-                           Eigen::Ref<Eigen::VectorXd> phi) const {
-  detail::begin_vector_output(*this, q, phi, name);
+void SphericalJoint::compute_value(const core::Configuration& q, double /*t*/,
+                                   Eigen::Ref<Eigen::VectorXd> phi) const {
   phi = points_.value(q);
 }
 
-void SphericalJoint::jacobian(const core::Configuration& q, double /*t*/,
-                              Eigen::Ref<Eigen::MatrixXd> B) const {
-  detail::begin_jacobian(*this, q, B, name);
+void SphericalJoint::compute_jacobian(const core::Configuration& q, double /*t*/,
+                                      Eigen::Ref<Eigen::MatrixXd> B) const {
   points_.add_jacobian(q, B, 0);
 }
 
-void SphericalJoint::multiplier_tangent(const core::Configuration& q, double /*t*/,
-                                        const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                        Eigen::Ref<Eigen::MatrixXd> K) const {
-  detail::begin_multiplier_tangent(*this, q, lambda, K, name);
+void SphericalJoint::compute_multiplier_tangent(const core::Configuration& q, double /*t*/,
+                                                const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                                Eigen::Ref<Eigen::MatrixXd> K) const {
   points_.add_multiplier_tangent(q, lambda, K);
 }
 
-void SphericalJoint::acceleration_terms(const core::Configuration& q,
-                                        const Eigen::VectorXd& velocity, double /*t*/,
-                                        Eigen::Ref<Eigen::VectorXd> c) const {
-  detail::begin_acceleration_terms(*this, q, velocity, c, name);
+void SphericalJoint::compute_acceleration_terms(const core::Configuration& q,
+                                                const Eigen::VectorXd& velocity, double /*t*/,
+                                                Eigen::Ref<Eigen::VectorXd> c) const {
   c = points_.acceleration_terms(q, velocity);
 }
 

@@ -178,7 +178,7 @@ void SystemAssembly::compute_constraint(int ci, const core::ElementInput& in,
   const std::vector<int>& blocks = constraint.blocks();
   const bool with_tangent = K && c->stiffness != 0.0;
   if (with_tangent) {
-    w.multiplier_tangent.setZero(n, n);
+    w.multiplier_tangent.resize(n, n);  // the constraint zeroes it (Constraint::multiplier_tangent)
     constraint.multiplier_tangent(q, in.time, lambda_c, w.multiplier_tangent);
   }
   if (chart == Chart::converged)

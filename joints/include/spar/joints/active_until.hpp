@@ -27,17 +27,6 @@ class ActiveUntil final : public Constraint {
 
   int equation_count() const override { return active_ ? constraint_->equation_count() : 0; }
   const std::vector<int>& blocks() const override { return active_ ? constraint_->blocks() : none_; }
-  void value(const core::Configuration& q, double t,
-             Eigen::Ref<Eigen::VectorXd> phi) const override;
-  void jacobian(const core::Configuration& q, double t,
-                Eigen::Ref<Eigen::MatrixXd> B) const override;
-  void multiplier_tangent(const core::Configuration& q, double t,
-                          const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override;
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
-                          Eigen::Ref<Eigen::VectorXd> c) const override;
-  void time_derivative(const core::Configuration& q, double t,
-                       Eigen::Ref<Eigen::VectorXd> phi_t) const override;
   /// While active, the wrapped constraint's; the release condition is not an event distance
   /// (it is tested at the end of each step).
   double event_distance(const core::Configuration& q) const override {
@@ -53,6 +42,18 @@ class ActiveUntil final : public Constraint {
   const std::string& name() const { return name_; }
 
  private:
+  void compute_value(const core::Configuration& q, double t,
+                     Eigen::Ref<Eigen::VectorXd> phi) const override;
+  void compute_jacobian(const core::Configuration& q, double t,
+                        Eigen::Ref<Eigen::MatrixXd> B) const override;
+  void compute_multiplier_tangent(const core::Configuration& q, double t,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override;
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override;
+  void compute_time_derivative(const core::Configuration& q, double t,
+                               Eigen::Ref<Eigen::VectorXd> phi_t) const override;
+
   std::unique_ptr<Constraint> constraint_;
   Condition release_;
   std::string name_;

@@ -27,24 +27,24 @@ class AngleDriver final : public Constraint {
   int equation_count() const override { return 1; }
   const std::vector<int>& blocks() const override { return nodes_; }
 
-  /// Φ = (R u)·w(t).
-  void value(const core::Configuration& q, double t,
-             Eigen::Ref<Eigen::VectorXd> phi) const override;
-  /// B = (u × Rᵀw)ᵀ in the rotation columns (eq. J10).
-  void jacobian(const core::Configuration& q, double t,
-                Eigen::Ref<Eigen::MatrixXd> B) const override;
-  /// K = λ ũ (Rᵀw)~ (eq. J11).
-  void multiplier_tangent(const core::Configuration& q, double t,
-                          const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override;
-  /// c = R(Ω×(Ω×u))·w + 2 R(Ω×u)·ẇ + (R u)·ẅ, ẇ = −f′ d, ẅ = −f″ d − f′² w (eq. J22).
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
-                          Eigen::Ref<Eigen::VectorXd> c) const override;
-  /// Φ_t = (R u)·ẇ = −f′ (R u)·d.
-  void time_derivative(const core::Configuration& q, double t,
-                       Eigen::Ref<Eigen::VectorXd> phi_t) const override;
-
  private:
+  /// Φ = (R u)·w(t).
+  void compute_value(const core::Configuration& q, double t,
+                     Eigen::Ref<Eigen::VectorXd> phi) const override;
+  /// B = (u × Rᵀw)ᵀ in the rotation columns (eq. J10).
+  void compute_jacobian(const core::Configuration& q, double t,
+                        Eigen::Ref<Eigen::MatrixXd> B) const override;
+  /// K = λ ũ (Rᵀw)~ (eq. J11).
+  void compute_multiplier_tangent(const core::Configuration& q, double t,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override;
+  /// c = R(Ω×(Ω×u))·w + 2 R(Ω×u)·ẇ + (R u)·ẅ, ẇ = −f′ d, ẅ = −f″ d − f′² w (eq. J22).
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override;
+  /// Φ_t = (R u)·ẇ = −f′ (R u)·d.
+  void compute_time_derivative(const core::Configuration& q, double t,
+                               Eigen::Ref<Eigen::VectorXd> phi_t) const override;
+
   /// d(t) and w(t) = n × d(t) for the angle f.
   struct DrivenFrame {
     Eigen::Vector3d d;

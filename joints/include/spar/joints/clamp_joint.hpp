@@ -23,21 +23,21 @@ class ClampJoint final : public Constraint {
   int equation_count() const override { return 6; }
   const std::vector<int>& blocks() const override { return nodes_; }
 
-  /// Φ = (p_a − p_b, (R_a e₂ᵃ)·(R_b e₃ᵇ), (R_a e₃ᵃ)·(R_b e₁ᵇ), (R_a e₁ᵃ)·(R_b e₂ᵇ)).
-  void value(const core::Configuration& q, double t,
-             Eigen::Ref<Eigen::VectorXd> phi) const override;
-  /// Rows 1–3 eq. J6, rows 4–6 eq. J13 for each product.
-  void jacobian(const core::Configuration& q, double t,
-                Eigen::Ref<Eigen::MatrixXd> B) const override;
-  /// Eq. J7 for λ₁…₃ plus eq. J14 for λ₄…₆.
-  void multiplier_tangent(const core::Configuration& q, double t,
-                          const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override;
-  /// Rows 1–3 eq. J8, rows 4–6 eq. J15.
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
-                          Eigen::Ref<Eigen::VectorXd> c) const override;
-
  private:
+  /// Φ = (p_a − p_b, (R_a e₂ᵃ)·(R_b e₃ᵇ), (R_a e₃ᵃ)·(R_b e₁ᵇ), (R_a e₁ᵃ)·(R_b e₂ᵇ)).
+  void compute_value(const core::Configuration& q, double t,
+                     Eigen::Ref<Eigen::VectorXd> phi) const override;
+  /// Rows 1–3 eq. J6, rows 4–6 eq. J13 for each product.
+  void compute_jacobian(const core::Configuration& q, double t,
+                        Eigen::Ref<Eigen::MatrixXd> B) const override;
+  /// Eq. J7 for λ₁…₃ plus eq. J14 for λ₄…₆.
+  void compute_multiplier_tangent(const core::Configuration& q, double t,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override;
+  /// Rows 1–3 eq. J8, rows 4–6 eq. J15.
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override;
+
   ClampJoint(const Attachment& a, const Attachment& b, const JointFrames& frames,
              const core::Configuration& q0);
 

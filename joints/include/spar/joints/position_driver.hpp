@@ -24,24 +24,24 @@ class PositionDriver final : public Constraint {
   int equation_count() const override { return 1; }
   const std::vector<int>& blocks() const override { return nodes_; }
 
-  /// Φ = n·(p_a − p_a(q0)) − f(t).
-  void value(const core::Configuration& q, double t,
-             Eigen::Ref<Eigen::VectorXd> phi) const override;
-  /// B = nᵀ ∂p_a/∂Δ (eq. J2).
-  void jacobian(const core::Configuration& q, double t,
-                Eigen::Ref<Eigen::MatrixXd> B) const override;
-  /// Eq. J3 with f = λn.
-  void multiplier_tangent(const core::Configuration& q, double t,
-                          const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override;
-  /// c = n·R(Ω×(Ω×a)) − f″(t) (eqs. J4, J21).
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
-                          Eigen::Ref<Eigen::VectorXd> c) const override;
-  /// Φ_t = −f′(t).
-  void time_derivative(const core::Configuration& q, double t,
-                       Eigen::Ref<Eigen::VectorXd> phi_t) const override;
-
  private:
+  /// Φ = n·(p_a − p_a(q0)) − f(t).
+  void compute_value(const core::Configuration& q, double t,
+                     Eigen::Ref<Eigen::VectorXd> phi) const override;
+  /// B = nᵀ ∂p_a/∂Δ (eq. J2).
+  void compute_jacobian(const core::Configuration& q, double t,
+                        Eigen::Ref<Eigen::MatrixXd> B) const override;
+  /// Eq. J3 with f = λn.
+  void compute_multiplier_tangent(const core::Configuration& q, double t,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override;
+  /// c = n·R(Ω×(Ω×a)) − f″(t) (eqs. J4, J21).
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override;
+  /// Φ_t = −f′(t).
+  void compute_time_derivative(const core::Configuration& q, double t,
+                               Eigen::Ref<Eigen::VectorXd> phi_t) const override;
+
   std::vector<int> nodes_;
   AttachedPoint point_;
   Eigen::Vector3d direction_;

@@ -27,20 +27,6 @@ class PrismaticJoint final : public Constraint {
   int equation_count() const override { return rotation_lock_ ? 5 : 2; }
   const std::vector<int>& blocks() const override { return nodes_; }
 
-  /// Φ = ((p_a − c)·n₁, (p_a − c)·n₂[, rotation lock]).
-  void value(const core::Configuration& q, double t,
-             Eigen::Ref<Eigen::VectorXd> phi) const override;
-  /// Rows 1–2: nᵢᵀ ∂p_a/∂Δ (eq. J2); rows 3–5 eq. J13.
-  void jacobian(const core::Configuration& q, double t,
-                Eigen::Ref<Eigen::MatrixXd> B) const override;
-  /// Eq. J3 with f = λ₁n₁ + λ₂n₂, plus eq. J14 for λ₃…₅.
-  void multiplier_tangent(const core::Configuration& q, double t,
-                          const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override;
-  /// Rows 1–2: nᵢ·R(Ω×(Ω×a)) (eq. J4); rows 3–5 eq. J15.
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
-                          Eigen::Ref<Eigen::VectorXd> c) const override;
-
   /// The stroke s = (p_a − c)·d along the unit line direction d from the line point c [m]
   /// (docs/joints.md §5).
   double stroke(const core::Configuration& q) const;
@@ -48,6 +34,20 @@ class PrismaticJoint final : public Constraint {
   double stroke_rate(const core::Configuration& q, const Eigen::VectorXd& velocity) const;
 
  private:
+  /// Φ = ((p_a − c)·n₁, (p_a − c)·n₂[, rotation lock]).
+  void compute_value(const core::Configuration& q, double t,
+                     Eigen::Ref<Eigen::VectorXd> phi) const override;
+  /// Rows 1–2: nᵢᵀ ∂p_a/∂Δ (eq. J2); rows 3–5 eq. J13.
+  void compute_jacobian(const core::Configuration& q, double t,
+                        Eigen::Ref<Eigen::MatrixXd> B) const override;
+  /// Eq. J3 with f = λ₁n₁ + λ₂n₂, plus eq. J14 for λ₃…₅.
+  void compute_multiplier_tangent(const core::Configuration& q, double t,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override;
+  /// Rows 1–2: nᵢ·R(Ω×(Ω×a)) (eq. J4); rows 3–5 eq. J15.
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override;
+
   std::vector<int> nodes_;
   AttachedPoint point_;
   Eigen::Vector3d line_point_;

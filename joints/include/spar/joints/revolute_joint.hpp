@@ -28,20 +28,6 @@ class RevoluteJoint final : public Constraint {
   int equation_count() const override { return 5; }
   const std::vector<int>& blocks() const override { return nodes_; }
 
-  /// Φ = (p_a − p_b, d_a·d_b1, d_a·d_b2).
-  void value(const core::Configuration& q, double t,
-             Eigen::Ref<Eigen::VectorXd> phi) const override;
-  /// Rows 1–3 as SphericalJoint (eq. J6), rows 4–5 the dot-product rows (eq. J13).
-  void jacobian(const core::Configuration& q, double t,
-                Eigen::Ref<Eigen::MatrixXd> B) const override;
-  /// The sum of eq. J7 for λ₁…₃ and eq. J14 for λ₄, λ₅.
-  void multiplier_tangent(const core::Configuration& q, double t,
-                          const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override;
-  /// Rows 1–3 eq. J8, rows 4–5 eq. J15.
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
-                          Eigen::Ref<Eigen::VectorXd> c) const override;
-
   // Joint-level outputs (docs/joints.md §5).
 
   /// The hinge point p_b (inertial; p_a = p_b when Φ holds).
@@ -62,6 +48,20 @@ class RevoluteJoint final : public Constraint {
                            const Eigen::Ref<const Eigen::VectorXd>& lambda) const;
 
  private:
+  /// Φ = (p_a − p_b, d_a·d_b1, d_a·d_b2).
+  void compute_value(const core::Configuration& q, double t,
+                     Eigen::Ref<Eigen::VectorXd> phi) const override;
+  /// Rows 1–3 as SphericalJoint (eq. J6), rows 4–5 the dot-product rows (eq. J13).
+  void compute_jacobian(const core::Configuration& q, double t,
+                        Eigen::Ref<Eigen::MatrixXd> B) const override;
+  /// The sum of eq. J7 for λ₁…₃ and eq. J14 for λ₄, λ₅.
+  void compute_multiplier_tangent(const core::Configuration& q, double t,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override;
+  /// Rows 1–3 eq. J8, rows 4–5 eq. J15.
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override;
+
   RevoluteJoint(const Attachment& a, const Attachment& b, const Eigen::Vector3d& axis,
                 const JointFrames& frames, const core::Configuration& q0);
 

@@ -32,14 +32,15 @@ class SlidingNodeSlopes final : public Constraint {
   const std::vector<int>& blocks() const override { return blocks_; }
   SlopeCondition condition() const { return condition_; }
 
-  void value(const core::Configuration& q, double t, Eigen::Ref<Eigen::VectorXd> phi) const override;
-  void jacobian(const core::Configuration& q, double t, Eigen::Ref<Eigen::MatrixXd> B) const override;
-  void multiplier_tangent(const core::Configuration& q, double t, const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override;
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
-                          Eigen::Ref<Eigen::VectorXd> c) const override;
-
  private:
+  void compute_value(const core::Configuration& q, double t, Eigen::Ref<Eigen::VectorXd> phi) const override;
+  void compute_jacobian(const core::Configuration& q, double t, Eigen::Ref<Eigen::MatrixXd> B) const override;
+  void compute_multiplier_tangent(const core::Configuration& q, double t,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override;
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override;
+
   std::vector<int> blocks_;
   int dimension_;
   SlopeCondition condition_;

@@ -22,21 +22,21 @@ class SphericalJoint final : public Constraint {
   int equation_count() const override { return 3; }
   const std::vector<int>& blocks() const override { return nodes_; }
 
-  /// Φ = p_a − p_b.
-  void value(const core::Configuration& q, double t,
-             Eigen::Ref<Eigen::VectorXd> phi) const override;
-  /// B = [∂p_a/∂Δ_a, −∂p_b/∂Δ_b] (eq. J6).
-  void jacobian(const core::Configuration& q, double t,
-                Eigen::Ref<Eigen::MatrixXd> B) const override;
-  /// K = ∂(Bᵀλ)/∂Δ: ã (R_aᵀλ)~ and −b̃ (R_bᵀλ)~ in the rotation blocks (eq. J7).
-  void multiplier_tangent(const core::Configuration& q, double t,
-                          const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                          Eigen::Ref<Eigen::MatrixXd> K) const override;
-  /// c = R_a(Ω_a×(Ω_a×a)) − R_b(Ω_b×(Ω_b×b)) (eq. J8).
-  void acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
-                          Eigen::Ref<Eigen::VectorXd> c) const override;
-
  private:
+  /// Φ = p_a − p_b.
+  void compute_value(const core::Configuration& q, double t,
+                     Eigen::Ref<Eigen::VectorXd> phi) const override;
+  /// B = [∂p_a/∂Δ_a, −∂p_b/∂Δ_b] (eq. J6).
+  void compute_jacobian(const core::Configuration& q, double t,
+                        Eigen::Ref<Eigen::MatrixXd> B) const override;
+  /// K = ∂(Bᵀλ)/∂Δ: ã (R_aᵀλ)~ and −b̃ (R_bᵀλ)~ in the rotation blocks (eq. J7).
+  void compute_multiplier_tangent(const core::Configuration& q, double t,
+                                  const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                                  Eigen::Ref<Eigen::MatrixXd> K) const override;
+  /// c = R_a(Ω_a×(Ω_a×a)) − R_b(Ω_b×(Ω_b×b)) (eq. J8).
+  void compute_acceleration_terms(const core::Configuration& q, const Eigen::VectorXd& velocity, double t,
+                                  Eigen::Ref<Eigen::VectorXd> c) const override;
+
   SphericalJoint(const Attachment& a, const Attachment& b, const JointFrames& frames);
 
   std::vector<int> nodes_;
