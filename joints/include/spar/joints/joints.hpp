@@ -7,6 +7,7 @@
 #include <spar/joints/sliding_node_slopes.hpp>
 #include <spar/joints/angle_driver.hpp>
 #include <spar/joints/attachment.hpp>
+#include <spar/joints/check_constraint.hpp>
 #include <spar/joints/clamp_joint.hpp>
 #include <spar/joints/constraint.hpp>
 #include <spar/joints/point_joint.hpp>
