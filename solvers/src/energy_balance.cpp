@@ -21,13 +21,20 @@ void EnergyBalance::book_step(const SystemAssembly& assembly, const Eigen::Vecto
   Eigen::VectorXd force_next = work_force(assembly);
   external_work += 0.5 * (last_work_force + force_next).dot(increment);
   last_work_force = std::move(force_next);
+  // The dissipative forces' work, booked the same way: D += ½ (f_d,n + f_d,n+1) · hΔq.
+  const Eigen::VectorXd& dissipative_next = assembly.dissipative_force();
+  physical_dissipation += 0.5 * (last_dissipative_force + dissipative_next).dot(increment);
+  last_dissipative_force = dissipative_next;
 }
 
-// eq. D8: what the integrator dissipated is the work done minus the change of the energy.
+// eq. D8: what the integrator dissipated is the work done minus the change of the energy and
+// minus what the elements' dissipative forces took.
 Energies EnergyBalance::energies(const SystemAssembly& assembly) const {
   const SummedEnergies e = assembly.energies();
-  Energies energies{.kinetic = e.kinetic, .strain = e.strain, .gravity = e.gravity, .external_work = external_work};
-  energies.numerical_dissipation = energies.external_work - (energies.total() - initial_energy);
+  Energies energies{.kinetic = e.kinetic, .strain = e.strain, .gravity = e.gravity, .external_work = external_work,
+                    .physical_dissipation = physical_dissipation};
+  energies.numerical_dissipation =
+      energies.external_work - (energies.total() - initial_energy) - energies.physical_dissipation;
   return energies;
 }
 

@@ -1,7 +1,7 @@
 #include "system_assembly.hpp"
 
 #include <spar/core/converged_chart.hpp>
-#include <spar/core/work_sharing.hpp>
+#include <spar/solvers/work_sharing.hpp>
 #include <spar/solvers/linear_solver.hpp>
 #include <spar/error.hpp>
 
@@ -13,7 +13,7 @@ namespace spar::solvers::detail {
 namespace {
 
 /// Calls body(i) for i in [0, count): in order on this thread, or when `parallel` in chunks on
-/// the shared team (core/work_sharing.hpp), whose first exception is rethrown here once every
+/// the shared team (solvers/work_sharing.hpp), whose first exception is rethrown here once every
 /// running chunk has finished.
 template <class Body>
 void for_each_index(int count, bool parallel, const Body& body) {
@@ -21,7 +21,7 @@ void for_each_index(int count, bool parallel, const Body& body) {
     for (int i = 0; i < count; ++i) body(i);
     return;
   }
-  core::WorkSharing& team = core::WorkSharing::shared();
+  solvers::WorkSharing& team = solvers::WorkSharing::shared();
   team.for_each_chunk(count, team.chunk_for(count, 64),
                       [&](int begin, int end, int) {
                         for (int i = begin; i < end; ++i) body(i);
@@ -53,7 +53,7 @@ void for_each_rotation_pair(const core::Configuration& q, const std::vector<int>
 }  // namespace
 
 SystemAssembly::SystemAssembly(core::Model& model, std::vector<joints::Constraint*> constraints,
-                               core::AssemblyExecution execution)
+                               solvers::AssemblyExecution execution)
     : model_(model), constraints_(std::move(constraints)), execution_(execution) {
   for (const joints::Constraint* constraint : constraints_)
     if (!constraint)
@@ -64,14 +64,15 @@ SystemAssembly::SystemAssembly(core::Model& model, std::vector<joints::Constrain
 void SystemAssembly::rebuild() {
   const core::Configuration& q = model_.state();
   dof_count_ = model_.dof_count();
-  std::vector<core::PatternBlock> pattern_blocks;
+  std::vector<solvers::PatternBlock> pattern_blocks;
   element_work_.resize(static_cast<std::size_t>(model_.element_count()));
-  load_elements_.clear();
+  work_elements_.clear();
   for (int id = 0; id < model_.element_count(); ++id) {
-    if (model_.element(id).has_external_force()) load_elements_.push_back(id);
+    if (model_.element(id).has_external_force() || model_.element(id).has_dissipation())
+      work_elements_.push_back(id);
     element_work_[id].dofs = core::block_dofs(q, model_.element(id).blocks());
     element_work_[id].frozen_mass.resize(0, 0);
-    pattern_blocks.push_back(core::PatternBlock::element(element_work_[id].dofs));
+    pattern_blocks.push_back(solvers::PatternBlock::element(element_work_[id].dofs));
   }
   multiplier_count_ = 0;
   constraint_work_.resize(constraints_.size());
@@ -89,12 +90,12 @@ void SystemAssembly::rebuild() {
     // One square block per constraint over its dofs and its multipliers.
     std::vector<int> dofs = w.dofs;
     for (int i = 0; i < m; ++i) dofs.push_back(dof_count_ + w.first_multiplier + i);
-    pattern_blocks.push_back(core::PatternBlock::element(std::move(dofs)));
+    pattern_blocks.push_back(solvers::PatternBlock::element(std::move(dofs)));
   }
-  pattern_ = std::make_unique<core::SparsePattern>(size(), pattern_blocks);
+  pattern_ = std::make_unique<solvers::SparsePattern>(size(), pattern_blocks);
   find_substructures();
   residual_ = scale_ = Eigen::VectorXd::Zero(size());
-  external_force_ = constraint_force_ = Eigen::VectorXd::Zero(dof_count_);
+  external_force_ = dissipative_force_ = constraint_force_ = Eigen::VectorXd::Zero(dof_count_);
 }
 
 void SystemAssembly::find_substructures() {
@@ -209,8 +210,8 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
   // `automatic` on a model too small for the parallel evaluation to pay for certain: the faster
   // of the two as timed (execution_choice.hpp).
   const bool parallel_by_size = pattern_->runs_parallel(execution_);
-  const bool timed = execution_ == core::AssemblyExecution::automatic && !parallel_by_size &&
-                     core::WorkSharing::shared().thread_count() > 1;
+  const bool timed = execution_ == solvers::AssemblyExecution::automatic && !parallel_by_size &&
+                     solvers::WorkSharing::shared().thread_count() > 1;
   ExecutionChoice& choice = c ? matrix_execution_ : residual_execution_;
   const bool parallel = timed ? choice.parallel() : parallel_by_size;
   const auto start = std::chrono::steady_clock::now();
@@ -222,7 +223,7 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
           else
             compute_constraint(id - element_count, in, lambda, c, chart, increment, &K);
         },
-        parallel ? core::AssemblyExecution::parallel : core::AssemblyExecution::serial);
+        parallel ? solvers::AssemblyExecution::parallel : solvers::AssemblyExecution::serial);
   } else {
     for_each_index(total, parallel, [&](int id) {
       if (id < element_count)
@@ -237,14 +238,20 @@ void SystemAssembly::evaluate(const core::ElementInput& in, const Eigen::VectorX
   scale_.setZero();
   constraint_force_.setZero();
   const bool with_energy = (c == nullptr) && with_energies;
-  if (with_energy) external_force_.setZero();
+  if (with_energy) {
+    external_force_.setZero();
+    dissipative_force_.setZero();
+  }
   for (const ElementWork& w : element_work_) {
     for (std::size_t i = 0; i < w.dofs.size(); ++i) {
       const double r = w.output.residual(static_cast<Eigen::Index>(i));
       residual_(w.dofs[i]) += r;
       scale_(w.dofs[i]) += std::abs(r);
     }
-    if (with_energy) add_local(external_force_, w.dofs, w.output.external_force);
+    if (with_energy) {
+      add_local(external_force_, w.dofs, w.output.external_force);
+      add_local(dissipative_force_, w.dofs, w.output.dissipative_force);
+    }
   }
   for (const ConstraintWork& w : constraint_work_) gather_constraint(w, true);
 }
@@ -270,9 +277,11 @@ void SystemAssembly::evaluate_constraints_and_loads(const core::ElementInput& in
     gather_constraint(constraint_work_[ci], false);
   }
   external_force_.setZero();
-  for (const int id : load_elements_) {
+  dissipative_force_.setZero();
+  for (const int id : work_elements_) {
     compute_element(id, in, nullptr, Chart::local_increment, increment, false, nullptr);
     add_local(external_force_, element_work_[id].dofs, element_work_[id].output.external_force);
+    add_local(dissipative_force_, element_work_[id].dofs, element_work_[id].output.dissipative_force);
   }
 }
 
@@ -281,11 +290,13 @@ void SystemAssembly::evaluate_energies(const core::ElementInput& in) {
   request.residual = false;
   request.energy = true;
   external_force_.setZero();
+  dissipative_force_.setZero();
   for (int id = 0; id < static_cast<int>(element_work_.size()); ++id) {
     ElementWork& w = element_work_[id];
     w.output.reset(static_cast<int>(w.dofs.size()), request);
     model_.element(id).evaluate(in, request, w.output);
     add_local(external_force_, w.dofs, w.output.external_force);
+    add_local(dissipative_force_, w.dofs, w.output.dissipative_force);
   }
 }
 

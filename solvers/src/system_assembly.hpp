@@ -6,7 +6,7 @@
 
 #include <spar/core/element.hpp>
 #include <spar/core/model.hpp>
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 #include <spar/joints/constraint.hpp>
 
 #include "execution_choice.hpp"
@@ -42,7 +42,7 @@ struct SummedEnergies {
 class SystemAssembly {
 public:
   SystemAssembly(core::Model& model, std::vector<joints::Constraint*> constraints,
-                 core::AssemblyExecution execution);
+                 solvers::AssemblyExecution execution);
 
   /// Re-reads the model's elements and blocks and the constraints' blocks and equation counts;
   /// rebuilds the sparse pattern. The caller re-analyzes its linear solver.
@@ -58,8 +58,8 @@ public:
   /// the multipliers and the blocks no element holds (a sliding joint's ζ), fixed_unknown for the
   /// model's fixed dofs (whose rows and columns the Dirichlet conditions empty).
   const std::vector<int>& substructures() const { return substructures_; }
-  core::SparsePattern& pattern() { return *pattern_; }
-  const core::SparsePattern& pattern() const { return *pattern_; }
+  solvers::SparsePattern& pattern() { return *pattern_; }
+  const solvers::SparsePattern& pattern() const { return *pattern_; }
 
   /// Evaluates every element at `in` and every constraint at (in.q, in.time, λ) and gathers
   ///   residual = [Σ_e r_e + Σ_c Bᵀλ ; Φ]  (size() entries, in the chart's rows),
@@ -76,13 +76,15 @@ public:
 
   /// What a Newton test that leaves the dynamic residual untested needs at an iterate, at a
   /// fraction of evaluate()'s cost: every constraint (Φ into residual()'s multiplier rows, Bᵀλ
-  /// into constraint_force()) and the elements with external forces (Element::
-  /// has_external_force, into external_force()). residual()'s dynamic rows, scale() and
+  /// into constraint_force()) and the elements whose work the energy balance books (Element::
+  /// has_external_force and has_dissipation, into external_force() and dissipative_force()).
+  /// residual()'s dynamic rows, scale() and
   /// energies() keep their values of the last evaluate(): stale for this state.
   void evaluate_constraints_and_loads(const core::ElementInput& in, const Eigen::VectorXd& lambda,
                                       const Eigen::VectorXd& increment);
 
-  /// The elements' energies and external forces at `in` (energies(), external_force()), and
+  /// The elements' energies, external and dissipative forces at `in` (energies(), external_force(),
+  /// dissipative_force()), and
   /// nothing else: each element is asked for its energy alone (ElementRequest::residual false).
   void evaluate_energies(const core::ElementInput& in);
 
@@ -97,6 +99,9 @@ public:
   /// The external force of the elements' non-potential loads at the last residual-only
   /// evaluate() (global tangent layout, dof_count() entries).
   const Eigen::VectorXd& external_force() const { return external_force_; }
+  /// The dissipative force of the elements that have one (Element::has_dissipation), at the same
+  /// evaluation as external_force().
+  const Eigen::VectorXd& dissipative_force() const { return dissipative_force_; }
   /// Σ Bᵀλ of the constraints at the last evaluate() (global tangent layout): the constraint
   /// forces on the blocks are its negative.
   const Eigen::VectorXd& constraint_force() const { return constraint_force_; }
@@ -135,18 +140,19 @@ private:
 
   core::Model& model_;
   std::vector<joints::Constraint*> constraints_;
-  core::AssemblyExecution execution_;
-  /// For `automatic` below core::parallel_assembly_min_blocks: serial or parallel as timed, for
+  solvers::AssemblyExecution execution_;
+  /// For `automatic` below solvers::parallel_assembly_min_blocks: serial or parallel as timed, for
   /// the evaluations with a matrix and for those of the residual alone.
   ExecutionChoice matrix_execution_, residual_execution_;
   int dof_count_ = 0, multiplier_count_ = 0;
   std::vector<ElementWork> element_work_;
   std::vector<ConstraintWork> constraint_work_;
-  /// The elements with external forces (Element::has_external_force).
-  std::vector<int> load_elements_;
-  std::unique_ptr<core::SparsePattern> pattern_;
+  /// The elements whose work the energy balance books: external forces (Element::
+  /// has_external_force) or dissipative ones (has_dissipation).
+  std::vector<int> work_elements_;
+  std::unique_ptr<solvers::SparsePattern> pattern_;
   std::vector<int> substructures_;
-  Eigen::VectorXd residual_, scale_, external_force_, constraint_force_;
+  Eigen::VectorXd residual_, scale_, external_force_, dissipative_force_, constraint_force_;
 };
 
 }  // namespace spar::solvers::detail

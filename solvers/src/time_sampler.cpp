@@ -92,6 +92,7 @@ void TimeSampler::add_sample(double time, const GeneralizedAlpha& integrator) {
     sample.energies = {.kinetic = mix(e0.kinetic, e1.kinetic), .strain = mix(e0.strain, e1.strain),
                        .gravity = mix(e0.gravity, e1.gravity),
                        .external_work = mix(e0.external_work, e1.external_work),
+                       .physical_dissipation = mix(e0.physical_dissipation, e1.physical_dissipation),
                        .numerical_dissipation = mix(e0.numerical_dissipation, e1.numerical_dissipation)};
   }
   samples_.push_back(std::move(sample));

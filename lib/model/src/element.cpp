@@ -13,7 +13,10 @@ void ElementOutput::reset(int n, const ElementRequest& request) {
   if (request.damping) damping.setZero(n, n);
   if (request.mass) mass.setZero(n, n);
   energy = {};
-  if (request.energy) external_force.setZero(n);
+  if (request.energy) {
+    external_force.setZero(n);
+    dissipative_force.setZero(n);
+  }
 }
 
 namespace {
@@ -80,6 +83,8 @@ void check_output(const Element& element, const Configuration& q, const ElementR
   else if (request.mass && !square(out.mass)) wrong = "a mass of " + size(out.mass);
   else if (request.energy && out.external_force.size() != n)
     wrong = "an external force of " + std::to_string(out.external_force.size()) + " entries";
+  else if (request.energy && out.dissipative_force.size() != n)
+    wrong = "a dissipative force of " + std::to_string(out.dissipative_force.size()) + " entries";
   if (!wrong.empty())
     throw InputError("the output holds " + wrong + " for the element's " + std::to_string(n) + " dofs",
                      "core::Element::evaluate (" + element.name() + ")",

@@ -71,6 +71,11 @@ void SpringDamper::compute(const core::ElementInput& in, const core::ElementRequ
     out.damping.block<3, 3>(6, 0) = -D;
     out.damping.block<3, 3>(6, 6) = D;
   }
+  if (request.energy) {
+    // The dissipative part of the force, c l̇ e: its power c l̇² ≥ 0 leaves the motion as heat.
+    out.dissipative_force.segment<3>(0) = damping_ * e.dot(w) * e;
+    out.dissipative_force.segment<3>(6) = -damping_ * e.dot(w) * e;
+  }
   // No mass (M stays zero): the bodies at the ends carry it.
   out.energy.strain = 0.5 * stiffness_ * (l - rest_length_) * (l - rest_length_);
 }

@@ -28,6 +28,9 @@ public:
 
   const std::vector<int>& blocks() const override { return blocks_; }
   std::string name() const override;
+  /// With c > 0 the damper's force c l̇ e is a dissipative force: the integrator books its work as
+  /// physical dissipation (ElementOutput::dissipative_force), not as its own numerical one.
+  bool has_dissipation() const override { return damping_ > 0.0; }
 
 private:
   void compute(const spar::core::ElementInput& in, const spar::core::ElementRequest& request,

@@ -99,6 +99,27 @@ RancfCableElement<Dim>::RancfCableElement(const RancfCableParameters& parameters
   }
 }
 
+namespace {
+
+/// The Kelvin–Voigt force alone (eq. R13) at nodal e, length l and rates, into `force` (4·Dim
+/// entries, then ∂D/∂ẋ_A and ∂D/∂ẋ_B when it has 4·Dim + 2): the element's dissipative force,
+/// whose work the energy balance books as physical dissipation (docs/dynamics.md D8).
+template <int Dim>
+void add_dissipative_force(const RancfCableParameters& parameters, const std::vector<rancf::QuadraturePoint>& table,
+                           const rancf::Nodal<double, Dim>& e, double l, const rancf::Nodal<double, Dim>& e_dot,
+                           double x_a_dot, double x_b_dot, Eigen::VectorXd& force) {
+  rancf::Nodal<double, Dim> f_e = zero_nodal<double, Dim>();
+  double f_a = 0.0, f_b = 0.0;
+  rancf::viscous_force<double, Dim>(parameters.section, table, e, l, e_dot, x_a_dot, x_b_dot, f_e, f_a, f_b);
+  for (int k = 0; k < 4; ++k) force.template segment<Dim>(k * Dim) += f_e[k];
+  if (force.size() == 4 * Dim + 2) {
+    force(4 * Dim) += f_a;
+    force(4 * Dim + 1) += f_b;
+  }
+}
+
+}  // namespace
+
 template <int Dim>
 void RancfCableElement<Dim>::compute(const ElementInput& in, const ElementRequest& request,
                                      ElementOutput& out) const {
@@ -169,6 +190,10 @@ void RancfCableElement<Dim>::compute(const ElementInput& in, const ElementReques
       parameters_.section.mass_per_length, table_, nodal<double, Dim>(local), l, g, grad_g, grad_gl);
   if (request.residual)
     for (int k = 0; k < 4; ++k) out.residual.template segment<Dim>(k * Dim) += grad_g[k];
+
+  if (request.energy && viscous)
+    add_dissipative_force<Dim>(parameters_, table_, nodal<double, Dim>(local), l, nodal<double, Dim>(rate), 0.0, 0.0,
+                               out.dissipative_force);
 
   if (!in.dynamic()) return;
   // Inertia: M v̇ with the constant M = m ⊗ I (000 §2: no quadratic-velocity terms).
@@ -296,6 +321,10 @@ void AleRancfCableElement<Dim>::compute(const ElementInput& in, const ElementReq
                                 nodal<double, Dim>(local_q.template head<4 * Dim>()),
                                 local_q(n - 2), local_q(n - 1), out.mass);
   if (!dynamic) out.energy.kinetic = 0.0;
+  if (request.energy && dynamic && parameters_.section.damping_coefficient > 0.0)
+    add_dissipative_force<Dim>(parameters_, table_, nodal<double, Dim>(local_q.template head<4 * Dim>()),
+                               local_q(n - 1) - local_q(n - 2), nodal<double, Dim>(local_v.template head<4 * Dim>()),
+                               local_v(n - 2), local_v(n - 1), out.dissipative_force);
 }
 
 template class RancfCableElement<2>;

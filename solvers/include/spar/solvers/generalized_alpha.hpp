@@ -10,7 +10,7 @@
 /// model's blocks and elements and the constraints: a new element or joint needs no change here.
 
 #include <spar/core/model.hpp>
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 #include <spar/joints/constraint.hpp>
 #include <spar/solvers/dynamic_state.hpp>
 #include <spar/solvers/linear_solver.hpp>
@@ -85,7 +85,7 @@ struct DynamicOptions {
   /// Parallel from solvers::parallel_assembly_min_blocks elements and joints up; below, with more than
   /// one thread, serial or parallel as the faster of the two is timed during the run (bitwise the
   /// serial result either way; docs/performance.md, "Parallel assembly").
-  core::AssemblyExecution assembly = core::AssemblyExecution::automatic;
+  solvers::AssemblyExecution assembly = solvers::AssemblyExecution::automatic;
   /// Consistent initial assembly by the first initialize() (docs/dynamics.md, "Initial
   /// assembly"): the positions are moved onto Φ(q, t₀) = 0 and the velocities onto
   /// B v + Φ_t = 0, each by the least change in the metric of the mass matrix; what changed is
@@ -160,7 +160,12 @@ struct Energies {
   /// Work done since t = 0 by external loads (f_ext · v) and by the constraint forces (−λᵀ B v,
   /// non-zero for drivers), trapezoidal in time.
   double external_work = 0.0;
-  /// What the integrator dissipated since t = 0: external_work − (total() − total at t = 0).
+  /// The work of the elements' dissipative forces since t = 0 (dampers, the Kelvin–Voigt stresses
+  /// of cables: Element::has_dissipation), trapezoidal in time like external_work: the heat the
+  /// model's own damping made (docs/dynamics.md D8).
+  double physical_dissipation = 0.0;
+  /// What the integrator dissipated since t = 0: external_work − (total() − total at t = 0) −
+  /// physical_dissipation.
   double numerical_dissipation = 0.0;
   double total() const { return kinetic + strain + gravity; }
 };

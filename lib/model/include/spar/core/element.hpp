@@ -75,6 +75,11 @@ struct ElementOutput {
   /// reset() sizes and zeroes it on an energy request only: on any other it keeps what an earlier
   /// call left (or is empty), and an element writes it only when `energy` is asked for.
   Eigen::VectorXd external_force;
+  /// With `energy`, for an element that has_dissipation(): its dissipative generalized force f_d
+  /// (a damper, the Kelvin–Voigt stresses of a cable), the part of r whose power v·f_d ≥ 0 leaves
+  /// the motion as heat. The integrator books its work as the physical dissipation, apart from
+  /// its own numerical dissipation (docs/dynamics.md D8). Sized and zeroed like external_force.
+  Eigen::VectorXd dissipative_force;
 
   /// Sizes and zeroes what `request` asks for (and the residual always), for an element with n
   /// local dofs.
@@ -109,6 +114,10 @@ public:
   /// every freedom it couples has mass from it. GeneralizedAlpha adds these words to the error of
   /// a singular iteration matrix, so a family names its own defect and the integrator none.
   virtual std::string mass_defect() const { return {}; }
+  /// True for an element with dissipative forces (ElementOutput::dissipative_force on an energy
+  /// request). The integrator evaluates these elements at every step to book their work; an
+  /// element that dissipates without saying so has its heat counted as numerical dissipation.
+  virtual bool has_dissipation() const { return false; }
   /// False for an element whose static forces derive from no potential (a moment load: no
   /// potential gives its work on 3D rotations). solve_static then does not judge stability by the
   /// energy (StaticReport::unstable_directions = −1, docs/errors.md).

@@ -82,6 +82,8 @@ public:
 
   const std::vector<int>& blocks() const override { return blocks_; }
   std::string name() const override { return parameters_.name; }
+  /// Damped (RancfSection::damping_coefficient > 0): the Kelvin–Voigt force is its dissipative force.
+  bool has_dissipation() const override { return parameters_.section.damping_coefficient > 0.0; }
   const RancfCableParameters& parameters() const { return parameters_; }
 
 private:
@@ -104,6 +106,8 @@ public:
 
   const std::vector<int>& blocks() const override { return blocks_; }
   std::string name() const override { return parameters_.name; }
+  /// Damped (RancfSection::damping_coefficient > 0): the Kelvin–Voigt force is its dissipative force.
+  bool has_dissipation() const override { return parameters_.section.damping_coefficient > 0.0; }
   const RancfCableParameters& parameters() const { return parameters_; }
 
 private:
