@@ -1,15 +1,15 @@
 #pragma once
 /// \file
 /// The choice between the serial and the parallel evaluation of a model's blocks, by timing both
-/// (SystemAssembly, for core::AssemblyExecution::automatic below
-/// core::parallel_assembly_min_blocks).
+/// (SystemAssembly, for solvers::AssemblyExecution::automatic below
+/// solvers::parallel_assembly_min_blocks).
 
 #include <array>
 #include <chrono>
 
 namespace spar::solvers::detail {
 
-/// Below core::parallel_assembly_min_blocks neither evaluation wins for certain: the
+/// Below solvers::parallel_assembly_min_blocks neither evaluation wins for certain: the
 /// slider-crank's 17 blocks assemble in 23 instead of 39 µs on two idle cores, and a second
 /// process or thread on the other core can turn that round (docs/performance.md, "Parallel
 /// assembly"). So a round times both: `samples` evaluations of each kind in a row, each run

@@ -74,7 +74,7 @@ void LinearSolver::check_square_compressed(const SparseMatrix& A,
     throw Error("matrix is empty (0 × 0)", where(operation), "assemble the system first");
   if (!A.isCompressed())
     throw Error("matrix is not in compressed form", where(operation),
-                "call makeCompressed() on it, or assemble it with core::SparsePattern");
+                "call makeCompressed() on it, or assemble it with solvers::SparsePattern");
 }
 
 void LinearSolver::analyze(const SparseMatrix& A) {

@@ -20,7 +20,7 @@ constexpr int inner = 0, boundary_and_interface = 1;
 
 }  // namespace
 
-SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
+SubstructuredPattern substructured_pattern(const solvers::SparseMatrix& A,
                                            const std::vector<int>& substructure) {
   const int n = static_cast<int>(A.cols());
   // Left out of P: the couplings between two substructures, and the off-diagonal entries of a
@@ -80,7 +80,7 @@ SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
   return p;
 }
 
-RowOrder row_order(const core::SparseMatrix& A) {
+RowOrder row_order(const solvers::SparseMatrix& A) {
   const int n = static_cast<int>(A.rows());
   const int* column_starts = A.outerIndexPtr();
   const int* row_indices = A.innerIndexPtr();
@@ -100,7 +100,7 @@ RowOrder row_order(const core::SparseMatrix& A) {
   return order;
 }
 
-double residual_and_backward_error(const core::SparseMatrix& A, const RowOrder& rows,
+double residual_and_backward_error(const solvers::SparseMatrix& A, const RowOrder& rows,
                                    const Eigen::Ref<const Eigen::VectorXd>& x,
                                    const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::VectorXd& r,
                                    Eigen::VectorXd& row_scale, bool measure_rows) {

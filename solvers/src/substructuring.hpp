@@ -17,7 +17,7 @@
 // target in a few sweeps (LinearSolver::refinement_target: round-off by default, 1e-9 for a
 // Newton increment), so the Newton iterates are those of an exact factorization.
 
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 #include <spar/solvers/linear_solver.hpp>
 
 #include <Eigen/Core>
@@ -43,7 +43,7 @@ struct SubstructuredPattern {
 
 /// The substructured pattern of A for `substructure` (one entry per unknown: the substructure it
 /// belongs to, ≥ 0, interface_unknown or fixed_unknown), as LinearSolver::analyze has checked it.
-SubstructuredPattern substructured_pattern(const core::SparseMatrix& A,
+SubstructuredPattern substructured_pattern(const solvers::SparseMatrix& A,
                                            const std::vector<int>& substructure);
 
 /// A compressed-column matrix's entries row by row: row i's are positions[starts[i] …
@@ -53,7 +53,7 @@ struct RowOrder {
 };
 
 /// The row order of A's pattern.
-RowOrder row_order(const core::SparseMatrix& A);
+RowOrder row_order(const solvers::SparseMatrix& A);
 
 /// r = b − A x, and the normwise backward error of x for the system with every row divided by its
 /// largest entry, D = diag(row_scale) (as KLU scales it): ω = ‖D⁻¹r‖∞ / ‖D⁻¹(|A||x| + |b|)‖∞.
@@ -63,7 +63,7 @@ RowOrder row_order(const core::SparseMatrix& A);
 /// pass. Row by row (`rows` = row_order(A)): each row's sums are formed in registers, in the
 /// order of its columns, the order a pass by columns adds them in, so r and the sums are the same
 /// bits, without a scattered update of three vectors per entry.
-double residual_and_backward_error(const core::SparseMatrix& A, const RowOrder& rows,
+double residual_and_backward_error(const solvers::SparseMatrix& A, const RowOrder& rows,
                                    const Eigen::Ref<const Eigen::VectorXd>& x,
                                    const Eigen::Ref<const Eigen::VectorXd>& b, Eigen::VectorXd& r,
                                    Eigen::VectorXd& row_scale, bool measure_rows);

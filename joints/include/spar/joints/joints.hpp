@@ -10,6 +10,7 @@
 #include <spar/joints/check_constraint.hpp>
 #include <spar/joints/clamp_joint.hpp>
 #include <spar/joints/constraint.hpp>
+#include <spar/joints/coordinate_driver.hpp>
 #include <spar/joints/point_joint.hpp>
 #include <spar/joints/point_kinematics.hpp>
 #include <spar/joints/position_driver.hpp>

@@ -8,7 +8,7 @@
 /// sizes and pattern, counts the calls and raises the errors; a backend (KLU, UMFPACK, Eigen's
 /// SparseLU) only calls its library.
 
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -23,7 +23,7 @@
 
 namespace spar::solvers {
 
-using core::SparseMatrix;
+using solvers::SparseMatrix;
 
 /// The available sparse LU backends.
 enum class LinearSolverKind {

@@ -4,7 +4,7 @@
 /// with constraints in the null-space form (docs/dynamics.md D11).
 
 #include <spar/core/model.hpp>
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 #include <spar/joints/constraint.hpp>
 
 #include <Eigen/Core>
@@ -15,10 +15,10 @@ namespace spar::solvers {
 
 struct ModalOptions {
   int modes = 10;  ///< the lowest this many (fewer when the constrained model has fewer freedoms)
-  /// Parallel from core::parallel_assembly_min_blocks elements and joints up; below, with more than
+  /// Parallel from solvers::parallel_assembly_min_blocks elements and joints up; below, with more than
   /// one thread, serial or parallel as the faster of the two is timed during the run (bitwise the
   /// serial result either way; docs/performance.md, "Parallel assembly").
-  core::AssemblyExecution assembly = core::AssemblyExecution::automatic;
+  solvers::AssemblyExecution assembly = solvers::AssemblyExecution::automatic;
 };
 
 /// The modes, lowest first.

@@ -6,7 +6,7 @@
 /// symbolic analysis is done once per run.
 
 #include <spar/core/model.hpp>
-#include <spar/core/sparse_assembly.hpp>
+#include <spar/solvers/sparse_assembly.hpp>
 #include <spar/error.hpp>
 #include <spar/joints/constraint.hpp>
 #include <spar/solvers/linear_solver.hpp>
@@ -23,10 +23,10 @@ struct StaticOptions {
   double constraint_tolerance = 1e-10; ///< ‖Φ‖∞ at convergence (constraints only)
   int max_cutbacks = 10;              ///< halvings of the load increment (which never grows back) before giving up
   LinearSolverKind linear_solver = LinearSolverKind::klu;
-  /// Parallel from core::parallel_assembly_min_blocks elements and joints up; below, with more than
+  /// Parallel from solvers::parallel_assembly_min_blocks elements and joints up; below, with more than
   /// one thread, serial or parallel as the faster of the two is timed during the run (bitwise the
   /// serial result either way; docs/performance.md, "Parallel assembly").
-  core::AssemblyExecution assembly = core::AssemblyExecution::automatic;
+  solvers::AssemblyExecution assembly = solvers::AssemblyExecution::automatic;
 };
 
 /// One converged load step.
