@@ -1,7 +1,9 @@
-// The examples' command line (examples/common/cli.hpp) refuses every value a run cannot use with a
+// A driver's command line (spar::study::CommandLine, <spar/study/command_line.hpp>) refuses every value a run cannot use with a
 // spar::Error naming the option, the problem and the accepted values (issue 15's audit, carried
 // over to the CommandLine class: each case is the argument list and a word its message must hold).
-#include <common/cli.hpp>
+#include <spar/study/command_line.hpp>
+
+#include <common/memory_use.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -11,8 +13,8 @@
 #include <string>
 #include <vector>
 
-using spar::examples::CommandLine;
-using spar::examples::Range;
+using spar::study::CommandLine;
+using spar::study::Range;
 
 namespace {
 
@@ -24,13 +26,13 @@ void read_dynamic_example(std::vector<std::string> args) {
   const double h = cli.number("--h", 1e-3, "time step [s]", Range::positive());
   const double t_end = cli.number("--t-end", 1.0, "end time [s]", Range::positive());
   cli.number("--rho-inf", 0.9, "spectral radius at infinity", Range::between(0, 1));
-  cli.number("--tolerance", 1e-6, "Newton tolerance", spar::examples::newton_tolerances);
+  cli.number("--tolerance", 1e-6, "Newton tolerance", spar::study::newton_tolerances);
   cli.number("--residual-tolerance", INFINITY, "relative residual (inf: off)", Range::positive(1));
   cli.number("--length", 1.0, "length [m]", Range::positive(1e3));
-  cli.elements("--elements", 8, "elements", 1, spar::examples::MemoryUse{.per_element = 1e5});
+  cli.elements("--elements", 8, "elements", 1, spar::study::MemoryUse{.per_element = 1e5});
   cli.integer("--steps", 10, "load steps", 1, 100000);
   cli.text("--strategy", "frozen", "iteration matrix", {"update", "frozen", "modified"});
-  if (cli.finish()) spar::examples::time_steps(h, t_end);
+  if (cli.finish()) spar::study::time_steps(h, t_end);
 }
 
 std::string message_of(const std::vector<std::string>& args) {
@@ -94,8 +96,8 @@ TEST_CASE("good command lines pass: negative numbers, exponents, the default inf
   CHECK(message_of({"--residual-tolerance", "inf"}).empty());  // the default: the check is off
   CHECK(message_of({"--h", "1e-3", "--t-end", "1e-3"}).empty());  // exactly one step
   CHECK(message_of({"--strategy", "update"}).empty());
-  CHECK(spar::examples::time_steps(1e-3, 1.0) == 1000);
-  CHECK(spar::examples::time_steps(0.1, 0.3) == 3);  // 0.3/0.1 = 2.9999999999999996
+  CHECK(spar::study::time_steps(1e-3, 1.0) == 1000);
+  CHECK(spar::study::time_steps(0.1, 0.3) == 3);  // 0.3/0.1 = 2.9999999999999996
 }
 
 TEST_CASE("a negative number is a value, not a missing one", "[cli]") {
@@ -215,9 +217,9 @@ TEST_CASE("an option the chosen mode ignores is refused, naming both options (is
 }
 
 TEST_CASE("the element limit is one example's memory per element in half the memory (issue 29)", "[cli]") {
-  using spar::examples::MemoryUse;
-  using spar::examples::element_limit;
-  using spar::examples::memory_budget;
+  using spar::study::MemoryUse;
+  using spar::study::element_limit;
+  using spar::study::memory_budget;
   // Each example's own figure (memory_use.hpp): its maximum is accepted, one more is refused with
   // the memory that run would need, without building anything.
   const std::vector<std::pair<std::string, MemoryUse>> examples = {
@@ -256,7 +258,7 @@ TEST_CASE("the element limit is one example's memory per element in half the mem
 }
 
 TEST_CASE("a time later than the run's end is refused, naming both options (issue 29)", "[cli]") {
-  using spar::examples::require_within_run;
+  using spar::study::require_within_run;
   // four_bar --output-interval 1e300 wrote the state at t = 0 only; truss_deployment --t-f 1e300
   // deployed nothing.
   CHECK_THROWS_WITH(require_within_run(1e300, "--output-interval", "the file would hold t = 0 only", 1.0),
@@ -267,7 +269,7 @@ TEST_CASE("a time later than the run's end is refused, naming both options (issu
 }
 
 TEST_CASE("a beam that is no slender beam is refused before solving (issue 29)", "[cli]") {
-  using spar::examples::require_slender_beam;
+  using spar::study::require_slender_beam;
   // modal_beam --length 1e-6 --width 1 --height 1: a "beam" a million times thicker than long.
   CHECK_THROWS_WITH(require_slender_beam(1e-6, "--length", 1, "--width", 1, "--height"),
                     Catch::Contains("slenderness of 1e-06") && Catch::Contains("deep beam") &&

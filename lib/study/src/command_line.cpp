@@ -192,6 +192,11 @@ void CommandLine::describe(const std::string& name, const std::string& fallback,
   options_.emplace_back(name, line.str());
 }
 
+int exit_failure(const std::exception& error) {
+  std::fprintf(stderr, "%s\n", error.what());
+  return 1;
+}
+
 NewtonTest newton_test_options(CommandLine& cli, double residual_tolerance) {
   return {.tolerance = cli.number("--tolerance", 1e-6, "Newton: |[dq, h^2 beta dlambda]|^2 (003: 1e-6)",
                                   newton_tolerances),

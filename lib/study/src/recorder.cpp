@@ -13,16 +13,16 @@ void Recorder::Impl::require_declaring(const char* what) const {
 }
 
 void Recorder::Impl::require_new_name(const std::string& name) const {
-  for (const ScalarEntry& s : scalars)
-    if (s.quantity.name == name) throw Error("the name '" + name + "' is declared twice", where(), "give each quantity its own name");
-  for (const VectorEntry& v : vectors)
-    if (v.quantity.name == name) throw Error("the name '" + name + "' is declared twice", where(), "give each quantity its own name");
+  const auto named = [&](const auto& entry) { return entry.quantity.name == name; };
+  if (std::any_of(scalars.begin(), scalars.end(), named) || std::any_of(vectors.begin(), vectors.end(), named))
+    throw Error("the name '" + name + "' is declared twice", where(), "give each quantity its own name");
 }
 
 double Scalar::last() const { return recorder_->impl_->scalars[index_].last; }
 double Scalar::max() const { return recorder_->impl_->scalars[index_].max; }
 double Scalar::min() const { return recorder_->impl_->scalars[index_].min; }
 double Scalar::max_abs() const { return recorder_->impl_->scalars[index_].max_abs; }
+std::optional<Spread> Scalar::spread() const { return study::spread(recorder_->impl_->scalars[index_].kept); }
 Eigen::Vector3d Vector::last() const { return recorder_->impl_->vectors[index_].last; }
 
 Recorder::Recorder(solvers::GeneralizedAlpha& integrator, RecorderOptions options)
@@ -71,6 +71,10 @@ EnergyBalance Recorder::energy_balance() {
                  "work done since t = 0 by the external loads without a potential and by the drivers, trapezoidal "
                  "along the increments",
                  &solvers::Energies::external_work),
+          energy("physical_dissipation",
+                 "work of the elements' own dissipative forces since t = 0 (dampers, Kelvin-Voigt stresses), "
+                 "trapezoidal along the increments; numerical_dissipation is what remains besides it",
+                 &solvers::Energies::physical_dissipation),
           energy("numerical_dissipation",
                  "energy removed by the integrator since t = 0: external_work - (E - E(0)), E = kinetic + strain + "
                  "gravity",
@@ -88,6 +92,18 @@ Quantity with_defaults(Quantity given, Quantity defaults) {
 }
 
 }  // namespace
+
+Scalar Recorder::total_energy(Quantity quantity) {
+  return scalar(with_defaults(std::move(quantity), {.name = "total_energy", .unit = "J",
+                                                    .description = "kinetic + strain energy + gravity potential"}),
+                [](const State& s) { return s.energies().total(); });
+}
+
+Scalar Recorder::energy_drift(double scale, Quantity quantity) {
+  impl_->start_energy_needed = true;
+  return scalar(with_defaults(std::move(quantity), {.name = "energy_drift", .unit = "1"}),
+                [this, scale](const State& s) { return (s.energies().total() - impl_->start_energy) / scale; });
+}
 
 Scalar Recorder::constraint_residual(Quantity quantity) {
   return scalar(with_defaults(std::move(quantity), {.name = "constraint_residual", .unit = "m",
@@ -139,6 +155,18 @@ void Recorder::attributes(const std::vector<Attribute>& attributes) {
   }
 }
 
+void Recorder::events(const std::string& what, const std::function<std::string(double, const std::string&)>& text) {
+  const std::vector<std::pair<double, std::string>>& events = impl_->integrator.events();
+  if (events.empty()) return;
+  Eigen::VectorXd times(static_cast<Eigen::Index>(events.size()));
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    times(static_cast<Eigen::Index>(k)) = events[k].first;
+    attributes({{"event_" + std::to_string(k), text ? text(events[k].first, events[k].second) : events[k].second}});
+  }
+  constant("events/time", times, "s",
+           "times of the structure events (" + what + "); attribute event_<k> describes event k");
+}
+
 void Recorder::constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
                         const std::string& description) {
   if (!impl_->writer)
@@ -180,17 +208,29 @@ void Recorder::close() {
   writer.write_attribute("substructured_factorizations", std::int64_t{counters.substructured_factorizations});
   writer.write_attribute("jtheta_updates", std::int64_t{counters.jtheta_evaluations});
   writer.write_attribute("cutbacks", std::int64_t{counters.cutbacks});
+  const int states = writer.steps_written();
   writer.close();
   if (impl_->csv) impl_->csv->close();
   for (output::CsvFile& file : impl_->snapshot_files) file.close();
+  if (impl_->options.report)
+    std::printf("%s: %ld steps to t = %g s, %ld Newton iterations, %ld factorizations, %.3f s; %d states in %s/%s.h5\n",
+                impl_->options.name.c_str(), counters.steps, integrator.time(), counters.newton_iterations,
+                counters.factorizations, counters.wall_seconds, states, impl_->options.folder.c_str(),
+                impl_->options.name.c_str());
 }
 
-output::JsonSummary Recorder::summary() const {
+output::JsonSummary Recorder::summary(SummaryContents contents) const {
   const solvers::DynamicCounters& counters = impl_->integrator.counters();
   output::JsonSummary summary;
-  summary.add("steps", counters.steps).add("newton_iterations", counters.newton_iterations);
-  summary.add("factorizations", counters.factorizations).add("cutbacks", counters.cutbacks);
-  summary.add("wall_s", counters.wall_seconds);
+  if (contents.counters) {
+    summary.add("steps", counters.steps).add("newton_iterations", counters.newton_iterations);
+    summary.add("factorizations", counters.factorizations).add("cutbacks", counters.cutbacks);
+    summary.add("wall_s", counters.wall_seconds);
+  }
+  if (contents.energy_balance) {
+    const solvers::Energies energies = impl_->integrator.energies();
+    summary.add("external_work", energies.external_work).add("numerical_dissipation", energies.numerical_dissipation);
+  }
   return summary;
 }
 

@@ -57,6 +57,7 @@ std::string Recorder::Impl::resolve_csv() {
 
 void Recorder::Impl::open() {
   const core::Configuration& q = integrator.configuration();
+  if (start_energy_needed) start_energy = integrator.energies().total();
   output::ResultsLayout layout{.node_count = options.nodes ? q.block_count() : 0,
                                .velocities = options.velocities,
                                .multiplier_count = options.multipliers ? integrator.multiplier_count() : 0,

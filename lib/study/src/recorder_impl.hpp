@@ -23,6 +23,7 @@ struct Recorder::Impl {
     double last = std::numeric_limits<double>::quiet_NaN();
     double max = -std::numeric_limits<double>::infinity(), min = std::numeric_limits<double>::infinity();
     double max_abs = 0.0;
+    std::vector<double> kept;  ///< the values from quantity.spread_from on
   };
   struct VectorEntry {
     Quantity quantity;
@@ -66,6 +67,7 @@ struct Recorder::Impl {
           entry.max = std::max(entry.max, v);
           entry.min = std::min(entry.min, v);
           entry.max_abs = std::max(entry.max_abs, std::abs(v));
+          if (state.time >= entry.quantity.spread_from - 0.5 * impl.options.time_step) entry.kept.push_back(v);
         }
       }
       return *scalars[i];
@@ -121,6 +123,8 @@ struct Recorder::Impl {
   std::optional<output::CsvFile> csv;
   std::vector<output::CsvFile> snapshot_files;
   int multiplier_count = 0;
+  bool start_energy_needed = false;  ///< energy_drift() was declared
+  double start_energy = 0.0;         ///< E(0) of energy_drift(), taken by open()
   bool closed = false;
 };
 

@@ -1,7 +1,5 @@
 #include <spar/study/run_limits.hpp>
 
-#include <spar/error.hpp>
-
 #include <unistd.h>
 
 #include <algorithm>

@@ -14,6 +14,7 @@
 
 #include <spar/study/run_limits.hpp>
 
+#include <exception>
 #include <map>
 #include <string>
 #include <utility>
@@ -77,6 +78,14 @@ private:
   std::vector<Condition> conditions_;
   std::vector<std::pair<std::string, std::string>> options_;  ///< name and --help line, in reading order
 };
+
+/// What a driver's main returns when its run stops on an error: prints error.what() (for a
+/// spar::Error: what, where and how to fix it) on stderr and returns 1.
+///
+///     int main(int argc, char** argv) try {
+///       ...
+///     } catch (const std::exception& error) { return study::exit_failure(error); }
+int exit_failure(const std::exception& error);
 
 /// The three tests of a Newton iteration (solvers::DynamicOptions), as 003 states them
 /// (docs/dynamics.md D4).

@@ -22,12 +22,14 @@
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/study/schedule.hpp>
 #include <spar/study/state.hpp>
+#include <spar/study/statistics.hpp>
 
 #include <Eigen/Core>
 
 #include <concepts>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -47,6 +49,8 @@ public:
   double max() const;
   double min() const;
   double max_abs() const;
+  /// The spread of its values at the steps from Quantity::spread_from on; none for fewer than two.
+  std::optional<Spread> spread() const;
 
 private:
   friend class Recorder;
@@ -69,7 +73,7 @@ private:
 
 /// The scalars of the energy balance (docs/dynamics.md D8).
 struct EnergyBalance {
-  Scalar kinetic, strain, gravity, external_work, numerical_dissipation;
+  Scalar kinetic, strain, gravity, external_work, physical_dissipation, numerical_dissipation;
 };
 
 struct RecorderOptions {
@@ -87,6 +91,8 @@ struct RecorderOptions {
   /// start: exact for straight beams) and its velocity, as point data ParaView colours by.
   bool centerline_fields = false;
   int csv_digits = 0;       ///< output::CsvFile's digits (0: the shortest text that reads back the same)
+  /// close() prints one line on stdout: the steps, the time reached, the solver's work and the files.
+  bool report = true;
   int flush_every = 100;    ///< output::ResultsWriter's block of steps
 };
 
@@ -97,6 +103,12 @@ struct Snapshots {
   Schedule schedule;
   int digits = 9;
   std::vector<double> labels;  ///< per centerline, a number written after its index (none: no column)
+};
+
+/// What Recorder::summary() starts the JSON summary with.
+struct SummaryContents {
+  bool counters = true;         ///< steps, newton_iterations, factorizations, cutbacks, wall_s
+  bool energy_balance = false;  ///< external_work and numerical_dissipation at the end (J)
 };
 
 /// What run() does besides stepping and recording, after each step and before its recording.
@@ -123,13 +135,26 @@ public:
   Scalar scalar(Quantity quantity, F&& value) {
     return add_scalar(std::move(quantity), evaluator<double>(std::forward<F>(value)));
   }
-  /// A 3-vector (a probe of the results file), e.g. a point's position.
+  /// A 3-vector (a probe of the results file), e.g. a point's position; `value` returns a 3-vector,
+  /// or a 2-vector (a planar model's point, z = 0).
   template <class F>
   Vector vector(Quantity quantity, F&& value) {
-    return add_vector(std::move(quantity), evaluator<Eigen::Vector3d>(std::forward<F>(value)));
+    std::function<Eigen::Vector3d(const State&)> point;
+    if constexpr (std::is_invocable_v<F&, const State&>)
+      point = [f = std::forward<F>(value)](const State& s) { return as_point(f(s)); };
+    else
+      point = [f = std::forward<F>(value)](const State&) { return as_point(f()); };
+    return add_vector(std::move(quantity), std::move(point));
   }
-  /// kinetic_energy, strain_energy, gravity_potential, external_work, numerical_dissipation (J).
+  /// kinetic_energy, strain_energy, gravity_potential, external_work, physical_dissipation,
+  /// numerical_dissipation (J).
   EnergyBalance energy_balance();
+  /// The total energy E = kinetic + strain + gravity potential, "total_energy" in J unless
+  /// `quantity` says otherwise.
+  Scalar total_energy(Quantity quantity = {});
+  /// Its drift (E − E(0)) / scale, E(0) the total energy at the start of run(): "energy_drift", "1",
+  /// `quantity` giving its description (what the scale is).
+  Scalar energy_drift(double scale, Quantity quantity);
   /// ‖Φ‖∞ after the step, "constraint_residual" in m unless `quantity` says otherwise.
   Scalar constraint_residual(Quantity quantity = {});
   /// The Newton iterations of the step, "newton_iterations", an integer, unless `quantity` says otherwise.
@@ -165,6 +190,10 @@ public:
 
   /// Root attributes of the results file (any time; "time_step" is written by itself).
   void attributes(const std::vector<Attribute>& attributes);
+  /// The integrator's structure events after run(): their times as the dataset events/time (its
+  /// description names `what` they are) and each as an attribute event_<k> holding
+  /// `text(time, description)` (default: the description).
+  void events(const std::string& what, const std::function<std::string(double, const std::string&)>& text = {});
   /// A constant dataset (output::ResultsWriter::write_constant), after run().
   void constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
                 const std::string& description);
@@ -173,12 +202,13 @@ public:
   /// recording each step as scheduled. Call integrator.initialize() first.
   void run(double t_end, const RunHooks& hooks = {});
   /// Writes the counters (t_end, steps, newton_iterations, factorizations,
-  /// substructured_factorizations, jtheta_updates, cutbacks) as attributes and closes the files.
+  /// substructured_factorizations, jtheta_updates, cutbacks) as attributes, closes the files and
+  /// prints RecorderOptions::report's line.
   void close();
 
-  /// A JSON summary holding the run's counters: steps, newton_iterations, factorizations, cutbacks
-  /// and wall_s (the integrator's wall time); the driver adds its figures and prints it.
-  output::JsonSummary summary() const;
+  /// A JSON summary holding `contents` (the counters, the integrator's wall time as wall_s; the
+  /// final energy balance); the driver adds its figures and prints it.
+  output::JsonSummary summary(SummaryContents contents = {}) const;
   /// Wall time of run()'s loop, s; states written to the results file.
   double wall_seconds() const { return wall_seconds_; }
   int states_written() const;
@@ -188,6 +218,14 @@ private:
   friend class Vector;
   struct Impl;
 
+  /// A 3-vector as it is, a 2-vector padded with z = 0.
+  template <class V>
+  static Eigen::Vector3d as_point(const V& v) {
+    if constexpr (std::decay_t<V>::RowsAtCompileTime == 2)
+      return {v(0), v(1), 0.0};
+    else
+      return v;
+  }
   template <class R, class F>
   static std::function<R(const State&)> evaluator(F&& f) {
     if constexpr (std::is_invocable_v<F&, const State&>)

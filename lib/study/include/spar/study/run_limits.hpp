@@ -5,6 +5,8 @@
 /// reaches, a beam that is no slender beam, more elements than the memory holds. Each check throws
 /// a spar::Error naming the options, the value and what to give instead.
 
+#include <spar/error.hpp>
+
 #include <cmath>
 #include <limits>
 #include <string>

@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -57,6 +58,9 @@ struct Quantity {
   /// Evaluated at every step, also where nothing is recorded, so that its running reductions
   /// (Scalar::max, …) cover every step; otherwise at the recorded steps only.
   bool every_step = false;
+  /// Keep its values at the steps from this time on (within half a step) for Scalar::spread(), e.g.
+  /// a point's residual vibration after a manoeuvre; +∞: none kept.
+  double spread_from = std::numeric_limits<double>::infinity();
   bool file = true;  ///< written to the results file; false: the CSV and the summary only (no unit needed)
 };
 
