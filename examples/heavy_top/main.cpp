@@ -19,35 +19,28 @@
 //   small step, and writes the rotation error ‖log(R_refᵀ R)‖ and the centre-of-mass error at
 //   every step. The last line of stdout is a JSON summary.
 #include <spar/spar.hpp>
-#include <spar/joints/joints.hpp>
-
-#include <cli.hpp>
-#include <run_counters.hpp>
-#include <energy_balance.hpp>
 
 #include "reference.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 
 using namespace spar;
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
-  examples::CommandLine cli(argc, argv, "heavy_top: the heavy top of Bruls, Cardona & Arnold (2012)");
-  const double h = cli.number("--h", 2.5e-4, "time step [s]", examples::Range::positive());
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]", examples::Range::positive());
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
+  study::CommandLine cli(argc, argv, "heavy_top: the heavy top of Bruls, Cardona & Arnold (2012)");
+  const double h = cli.number("--h", 2.5e-4, "time step [s]", study::Range::positive());
+  const double t_end = cli.number("--t-end", 1.0, "end time [s]", study::Range::positive());
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
   const double tolerance = cli.number("--tolerance", 1e-24, "Newton: |[dq, h^2 beta dlambda]|^2",
-                                        examples::newton_tolerances);
+                                      study::newton_tolerances);
   const double reference_step = cli.number("--reference-step", 1e-5, "largest RK4 step of the reference [s]",
-                                            examples::Range::positive());
+                                           study::Range::positive());
   const std::string out = cli.output_folder("--out", "results/heavy_top", "output folder");
   if (!cli.finish()) return 0;
-  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
-  examples::time_steps(reference_step, t_end, "--reference-step");  // and so for the RK4 reference
+  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  study::time_steps(reference_step, t_end, "--reference-step");  // and so for the RK4 reference
 
   // 2. The top (Brüls, Cardona & Arnold 2012, §5.1) and its initial state.
   const examples::heavy_top::TopParameters top = examples::heavy_top::classic_top();
@@ -57,7 +50,7 @@ int main(int argc, char** argv) try {
 
   // 3. The model: one rigid body (node at the centre of mass) and gravity.
   core::Model model;
-  const int body = model.rigid_body(model.add_rigid_body(
+  const int body = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = x0, .mass = top.mass, .inertia = top.inertia})).node;
   model.set_gravity(top.gravity);
 
@@ -82,109 +75,62 @@ int main(int argc, char** argv) try {
   const long substeps = std::max(1L, static_cast<long>(std::ceil(h / reference_step - 1e-9)));
   const double initial_energy = reference.energy(exact);
 
-  // 7. Integrate and record.
+  // 7. Record every step (docs/output.md, "heavy_top"): the errors against the reference, the
+  //    energies, and the top drawn as a square plate of edge a at its centre of mass — a thin plate
+  //    has I_X = I_Z = m a²/12, I_Y = m a²/6, the top's inertia for a = √(12 I_X/m) = 0.433 m (1 cm
+  //    thick, to be seen) — on a stick from the fixed point (body −Y from the centre of mass) to it.
+  study::Recorder rec(integrator, {.folder = out, .name = "heavy_top", .time_step = h, .nodes = true,
+                                   .velocities = true, .multipliers = true, .csv_digits = 15});
+  rec.attributes({{"example", "heavy_top (Bruls, Cardona & Arnold 2012, section 5.1)"},
+                  {"rho_infinity", rho_infinity}});
   const double plate = std::sqrt(12.0 * top.inertia(0, 0) / top.mass);
-  core::ResultsWriter results(out + "/heavy_top.h5",
-                              {.node_count = model.block_count(),
-                               .multiplier_count = integrator.multiplier_count(),
-                               .scalars = examples::followed_by<core::ResultsQuantity>({
-                                           {.name = "total_energy", .unit = "J",
-                                            .description = "kinetic energy + gravity potential"},
-                                           {.name = "rotation_error", .unit = "rad",
-                                            .description = "|log(R_ref^T R)|: rotation error against the RK4 reference"},
-                                           {.name = "position_error", .unit = "m",
-                                            .description = "|x - x_ref|: centre-of-mass error against the RK4 reference"},
-                                           {.name = "constraint_residual", .unit = "m",
-                                            .description = "largest violation |Phi|_inf of the fixed point after the step"},
-                                           {.name = "newton_iterations", .unit = "1",
-                                            .description = "Newton iterations (linear solves) of the step",
-                                            .integer = true}},
-                                           examples::energy_balance_layout()),
-                               .probes = {{.name = "reference_center_of_mass", .unit = "m",
-                                           .description = "the centre of mass of the RK4 reference, inertial frame"}},
-                               // The top drawn as a square plate of edge a at its centre of mass — a thin
-                               // plate has I_X = I_Z = m a²/12, I_Y = m a²/6, the top's inertia for
-                               // a = √(12 I_X/m) = 0.433 m (1 cm thick, to be seen) — on a stick from
-                               // the fixed point (body −Y from the centre of mass) to it.
-                               .rigid_bodies = {{.node = body, .kind = core::RigidBodyShape::Kind::box,
-                                                 .size = {plate, 0.01, plate}},
-                                                {.node = body, .kind = core::RigidBodyShape::Kind::box,
-                                                 .size = {0.02, top.center_of_mass.norm(), 0.02},
-                                                 .offset = -0.5 * top.center_of_mass}}});
-  results.write_attribute("example", "heavy_top (Bruls, Cardona & Arnold 2012, section 5.1)");
-  results.write_attribute("time_step", h);
-  results.write_attribute("rho_infinity", rho_infinity);
-  std::ofstream csv(out + "/heavy_top.csv");
-  csv.precision(15);
-  csv << "t,x,y,z,x_ref,y_ref,z_ref,omega_1,omega_2,omega_3,rotation_error,position_error,omega_error,"
-         "kinetic_energy,gravity_potential,total_energy,energy_drift,constraint_residual,newton_iterations,"
-      << examples::energy_balance_csv_columns << '\n';
-  double max_rotation_error = 0.0, max_position_error = 0.0, max_drift = 0.0, max_residual = 0.0;
-  double rotation_error = 0.0, position_error = 0.0, omega_error = 0.0, drift = 0.0;
-  auto record = [&]() {
-    const core::Configuration& q = model.state();
-    const Eigen::Vector3d x_ref = reference.center_of_mass(exact);
-    rotation_error = lie::log(exact.rotation_matrix().transpose() * q.rotation[body]).norm();
-    position_error = (q.position[body] - x_ref).norm();
-    const solvers::Energies energy = integrator.energies();
-    drift = (energy.total() - initial_energy) / initial_energy;
-    const double residual = integrator.constraint_residual();
-    const Eigen::Vector3d omega = integrator.velocity().segment<3>(q.blocks[body].offset + 3);
-    omega_error = (omega - exact.angular_velocity).norm();
-    max_rotation_error = std::max(max_rotation_error, rotation_error);
-    max_position_error = std::max(max_position_error, position_error);
-    max_drift = std::max(max_drift, std::abs(drift));
-    max_residual = std::max(max_residual, residual);
-    const Eigen::Vector3d& x = q.position[body];
-    csv << integrator.time() << ',' << x.x() << ',' << x.y() << ',' << x.z() << ',' << x_ref.x() << ','
-        << x_ref.y() << ',' << x_ref.z() << ',' << omega.x() << ',' << omega.y() << ',' << omega.z() << ','
-        << rotation_error << ',' << position_error << ',' << omega_error << ',' << energy.kinetic << ',' << energy.gravity << ','
-        << energy.total() << ',' << drift << ',' << residual << ',' << integrator.last_step_iterations();
-    examples::write_energy_balance_csv(csv, energy);
-    csv << '\n';
-    results.append({.time = integrator.time(), .configuration = &q, .velocity = &integrator.velocity(),
-                    .multipliers = &integrator.multipliers(),
-                    .scalars = examples::followed_by<double>(
-                        {energy.total(), rotation_error, position_error, residual,
-                         static_cast<double>(integrator.last_step_iterations())},
-                        examples::energy_balance_values(energy)),
-                    .probes = {x_ref}});
+  rec.shape({.node = body, .kind = output::RigidBodyShape::Kind::box, .size = {plate, 0.01, plate}});
+  rec.shape({.node = body, .kind = output::RigidBodyShape::Kind::box,
+             .size = {0.02, top.center_of_mass.norm(), 0.02}, .offset = -0.5 * top.center_of_mass});
+  const auto omega = [&](const study::State& s) -> Eigen::Vector3d {
+    return s.velocity.segment<3>(s.q.blocks[body].offset + 3);
   };
-  record();
-  core::ProgressBar progress(t_end, "heavy_top");
-  while (integrator.time() < t_end - 0.5 * h) {
-    integrator.step();
-    reference.advance(exact, h, substeps);
-    record();
-    progress.update(integrator.time(), integrator.counters().steps);
-  }
-  progress.finish();
-  const solvers::DynamicCounters& counters = integrator.counters();
-  examples::write_run_counters(results, integrator);
-  results.close();
+  rec.vector({.name = "position", .csv = "x,y,z", .file = false},
+             [&](const study::State& s) { return s.q.position[body]; });
+  rec.vector({.name = "reference_center_of_mass", .unit = "m",
+              .description = "the centre of mass of the RK4 reference, inertial frame", .csv = "x_ref,y_ref,z_ref"},
+             [&] { return reference.center_of_mass(exact); });
+  rec.vector({.name = "omega", .csv = "omega_1,omega_2,omega_3", .file = false}, omega);
+  const study::Scalar rotation_error = rec.scalar(
+      {.name = "rotation_error", .unit = "rad",
+       .description = "|log(R_ref^T R)|: rotation error against the RK4 reference"},
+      [&](const study::State& s) { return lie::log(exact.rotation_matrix().transpose() * s.q.rotation[body]).norm(); });
+  const study::Scalar position_error = rec.scalar(
+      {.name = "position_error", .unit = "m",
+       .description = "|x - x_ref|: centre-of-mass error against the RK4 reference"},
+      [&](const study::State& s) { return (s.q.position[body] - reference.center_of_mass(exact)).norm(); });
+  const study::Scalar omega_error = rec.scalar({.name = "omega_error", .file = false}, [&](const study::State& s) {
+    return (omega(s) - exact.angular_velocity).norm();
+  });
+  rec.total_energy({.description = "kinetic energy + gravity potential"});
+  const study::Scalar drift = rec.scalar({.name = "energy_drift", .file = false}, [&](const study::State& s) {
+    return (s.energies().total() - initial_energy) / initial_energy;
+  });
+  const study::Scalar residual =
+      rec.constraint_residual({.description = "largest violation |Phi|_inf of the fixed point after the step"});
+  rec.newton_iterations();
+  rec.energy_balance();
+  rec.csv({"position", "reference_center_of_mass", "omega", "rotation_error", "position_error", "omega_error",
+           "kinetic_energy", "gravity_potential", "total_energy", "energy_drift", "constraint_residual",
+           "newton_iterations", "external_work", "numerical_dissipation"});
+  rec.run(t_end, {.each_step = [&] { reference.advance(exact, h, substeps); }});
+  rec.close();
 
-  // 8. Report.
-  std::printf("heavy_top, h = %g s, rho_inf = %g, t = %g s: %ld steps, %ld Newton iterations, %.3f s; "
-              "rotation error %.3e rad, centre-of-mass error %.3e m (vs RK4, %ld sub-steps per step), "
-              "energy drift %.2e (max %.2e), max constraint residual %.2e m\n",
-              h, rho_infinity, integrator.time(), counters.steps, counters.newton_iterations,
-              counters.wall_seconds, rotation_error, position_error, substeps, drift, max_drift, max_residual);
-  examples::JsonSummary()
+  // 8. The summary.
+  rec.summary()
       .add("h", h).add("rho_inf", rho_infinity).add("t_end", integrator.time())
-      .add("steps", static_cast<int>(counters.steps))
-      .add("newton_iterations", static_cast<int>(counters.newton_iterations))
-      .add("factorizations", static_cast<int>(counters.factorizations))
-      .add("cutbacks", static_cast<int>(counters.cutbacks))
-      .add("wall_s", counters.wall_seconds)
-      .add("rotation_error", rotation_error).add("position_error", position_error)
-      .add("omega_error", omega_error)
-      .add("max_rotation_error", max_rotation_error).add("max_position_error", max_position_error)
-      .add("energy_drift", drift).add("max_energy_drift", max_drift)
-      .add("max_constraint_residual", max_residual)
-      .add("reference_substeps", static_cast<int>(substeps))
+      .add("rotation_error", rotation_error.last()).add("position_error", position_error.last())
+      .add("omega_error", omega_error.last())
+      .add("max_rotation_error", rotation_error.max()).add("max_position_error", position_error.max())
+      .add("energy_drift", drift.last()).add("max_energy_drift", drift.max_abs())
+      .add("max_constraint_residual", residual.max()).add("reference_substeps", substeps)
       .print();
   return 0;
 } catch (const std::exception& error) {
-  std::fprintf(stderr, "%s\n", error.what());
-  return 1;
+  return study::exit_failure(error);
 }
