@@ -42,6 +42,12 @@ def read_results_csv(folder, name):
         return list(csv.DictReader(f))
 
 
+def load_results(default, *names):
+    """The results folder (results_folder(default)) and the rows of each CSV file `names` in it."""
+    folder = results_folder(default)
+    return (folder, *(read_results_csv(folder, name) for name in names))
+
+
 def column(rows, name):
     """The column `name` of CSV rows as floats."""
     return [float(r[name]) for r in rows]

@@ -8,11 +8,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import (column, figure_grid, plot_energy_balance, read_results_csv, results_folder,  # noqa: E402
-                      save_figure)
+from plotting import column, figure_grid, load_results, plot_energy_balance, save_figure  # noqa: E402
 
-folder = results_folder("results/slider_crank")
-rows = read_results_csv(folder, "slider_crank.csv")
+folder, rows = load_results("results/slider_crank", "slider_crank.csv")
 t = column(rows, "t")
 rate = [100 * r for r in column(rows, "rod2_deformation_rate")]  # stored as a fraction (unit 1), shown in %
 speed = column(rows, "rod1_angular_speed")

@@ -38,22 +38,22 @@ inline SliderCrank build_slider_crank(int elements, double drive_rise_time = 0.0
   const core::SectionInertia inertia = core::SectionInertia::from(steel, square);
   const Eigen::Vector3d origin(0, 0, 0), elbow(SliderCrank::crank_length, 0, 0),
       end(SliderCrank::crank_length + SliderCrank::coupler_length, 0, 0);
-  s.crank = s.model.add_beam({.centerline = iga::straight_line<3>(origin, elbow, elements, 3),
+  s.crank = core::add_beam(s.model, {.centerline = iga::straight_line<3>(origin, elbow, elements, 3),
                               .stiffness = stiffness, .inertia = inertia});
-  s.coupler = s.model.add_beam({.centerline = iga::straight_line<3>(elbow, end, elements, 3),
+  s.coupler = core::add_beam(s.model, {.centerline = iga::straight_line<3>(elbow, end, elements, 3),
                                 .stiffness = stiffness, .inertia = inertia});
-  const core::GeometricallyExactBeam& crank = s.model.beam(s.crank);
-  const core::GeometricallyExactBeam& coupler = s.model.beam(s.coupler);
+  const core::GeometricallyExactBeam& crank = core::beam(s.model, s.crank);
+  const core::GeometricallyExactBeam& coupler = core::beam(s.model, s.coupler);
   const int crank_root = crank.node(0), crank_tip = crank.node(crank.control_point_count() - 1);
   const int coupler_root = coupler.node(0), coupler_tip = coupler.node(coupler.control_point_count() - 1);
-  s.slider_node = s.model.rigid_body(s.model.add_rigid_body(
+  s.slider_node = core::rigid_body(s.model, core::add_rigid_body(s.model,
       {.center_of_mass = end, .mass = SliderCrank::slider_mass,
        .inertia = Eigen::Matrix3d::Identity() * SliderCrank::slider_mass * 0.02 * 0.02 / 6})).node;
 
   core::LoadHistory rise;
   if (drive_rise_time > 0.0)
     rise = [drive_rise_time](double t) { return std::min(1.0, t / drive_rise_time); };
-  s.model.add_load(core::NodalMoment{.node = crank_root,
+  core::add_load(s.model, core::NodalMoment{.node = crank_root,
                                      .moment = Eigen::Vector3d(0, 0, SliderCrank::driving_moment),
                                      .frame = core::MomentFrame::inertial},
                    rise);
