@@ -79,12 +79,12 @@ inline FourBar build_four_bar(int elements, const FourBarGeometry& geometry = {}
   const core::CrossSection rod = core::CrossSection::circle(0.010, steel.poisson_ratio);
   const core::SectionStiffness stiffness = core::SectionStiffness::from(steel, rod);
   const core::SectionInertia inertia = core::SectionInertia::from(steel, rod);
-  f.crank = f.model.add_beam({.centerline = iga::straight_line<3>(A, B, elements, 3),
+  f.crank = core::add_beam(f.model, {.centerline = iga::straight_line<3>(A, B, elements, 3),
                               .stiffness = stiffness, .inertia = inertia});
-  f.rocker = f.model.add_beam({.centerline = iga::straight_line<3>(D, C, elements, 3),
+  f.rocker = core::add_beam(f.model, {.centerline = iga::straight_line<3>(D, C, elements, 3),
                                .stiffness = stiffness, .inertia = inertia});
-  const core::GeometricallyExactBeam& crank = f.model.beam(f.crank);
-  const core::GeometricallyExactBeam& rocker = f.model.beam(f.rocker);
+  const core::GeometricallyExactBeam& crank = core::beam(f.model, f.crank);
+  const core::GeometricallyExactBeam& rocker = core::beam(f.model, f.rocker);
   f.crank_root = crank.node(0);
   f.crank_tip = crank.node(crank.control_point_count() - 1);
   f.rocker_root = rocker.node(0);
@@ -97,7 +97,7 @@ inline FourBar build_four_bar(int elements, const FourBarGeometry& geometry = {}
   Eigen::Matrix3d frame;
   frame << along, Eigen::Vector3d::UnitZ().cross(along), Eigen::Vector3d::UnitZ();
   const double across = mass * geometry.coupler * geometry.coupler / 12, axial = mass * radius * radius / 2;
-  f.coupler_node = f.model.rigid_body(f.model.add_rigid_body(
+  f.coupler_node = core::rigid_body(f.model, core::add_rigid_body(f.model,
       {.center_of_mass = 0.5 * (B + C), .rotation = frame, .mass = mass,
        .inertia = Eigen::Vector3d(axial, across, across).asDiagonal().toDenseMatrix()})).node;
   f.model.set_gravity(Eigen::Vector3d(0, -9.81, 0));
