@@ -10,27 +10,19 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import column, plt, read_results_csv, results_folder, save_figure  # noqa: E402
+from plotting import column, load_results, plt, save_figure  # noqa: E402
 
-folder = results_folder("results/sliding_beam")
-rows = read_results_csv(folder, "sliding_beam.csv")
-snapshot_rows = read_results_csv(folder, "sliding_beam_snapshots.csv")
+folder, rows, snapshot_rows = load_results("results/sliding_beam", "sliding_beam.csv", "sliding_beam_snapshots.csv")
 
 fig = plt.figure(figsize=(13, 9))
 
-ax = fig.add_subplot(2, 2, 1)
-ax.plot(column(rows, "mass_x"), column(rows, "mass_z"), color="C0")
-ax.set_xlabel("X [m]")
-ax.set_ylabel("Z [m]")
-ax.set_title("mass M: X-Z trajectory (003 Figure 6a)")
-ax.set_aspect("equal")
-
-ax = fig.add_subplot(2, 2, 2)
-ax.plot(column(rows, "mass_y"), column(rows, "mass_z"), color="C1")
-ax.set_xlabel("Y [m]")
-ax.set_ylabel("Z [m]")
-ax.set_title("mass M: Y-Z trajectory (003 Figure 6b)")
-ax.set_aspect("equal")
+for panel, (axis, color, figure) in enumerate((("X", "C0", "6a"), ("Y", "C1", "6b")), start=1):
+    ax = fig.add_subplot(2, 2, panel)
+    ax.plot(column(rows, "mass_" + axis.lower()), column(rows, "mass_z"), color=color)
+    ax.set_xlabel(f"{axis} [m]")
+    ax.set_ylabel("Z [m]")
+    ax.set_title(f"mass M: {axis}-Z trajectory (003 Figure {figure})")
+    ax.set_aspect("equal")
 
 ax = fig.add_subplot(2, 2, 3, projection="3d")
 times = sorted({float(r["t"]) for r in snapshot_rows})
