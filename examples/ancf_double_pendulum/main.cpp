@@ -18,46 +18,39 @@
 //   is relative to m₁ g OA/2 + m₂ g (OA + AB/2) and includes the numerical dissipation of ρ∞. The
 //   last stdout line is a JSON summary with the preprocessing and simulation times that the
 //   paper's Table 2 lists (582.7 s to 1942.5 s there).
-#include <spar/joints/joints.hpp>
 #include <spar/spar.hpp>
 
-#include <cli.hpp>
-#include <energy_balance.hpp>
+#include <ancf_options.hpp>
+#include <memory_use.hpp>
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <numbers>
 
 using namespace spar;
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
-  examples::CommandLine cli(argc, argv, "ancf_double_pendulum: paper 001's spatial double pendulum (Table 2)");
-  const std::string element = cli.text("--element", "24", "24 | 30 (ANCF coordinates per element)", {"24", "30"});
-  const std::string force = cli.text("--force", "gerstmayr", "invariant (method I) | gerstmayr (method II)",
-                                     {"invariant", "gerstmayr"});
+  study::CommandLine cli(argc, argv, "ancf_double_pendulum: paper 001's spatial double pendulum (Table 2)");
+  const examples::AncfChoice ancf = examples::ancf_options(cli, false);
   const int elements_oa = cli.elements("--elements-oa", 2, "elements on link OA", 1, examples::memory_use::ancf_double_pendulum);
   const int elements_ab = cli.elements("--elements-ab", 5, "elements on link AB", 1, examples::memory_use::ancf_double_pendulum);
-  const double h = cli.number("--h", 1e-4, "time step [s]", examples::Range::positive());
-  const double t_end = cli.number("--t-end", 3.0, "end time [s]", examples::Range::positive());
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", examples::Range::between(0, 1));
+  const double h = cli.number("--h", 1e-4, "time step [s]", study::Range::positive());
+  const double t_end = cli.number("--t-end", 3.0, "end time [s]", study::Range::positive());
+  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
   const std::string strategy = cli.text("--iteration-matrix", "modified", "update | frozen | modified (modified Newton)",
-                                          {"update", "frozen", "modified"});
+                                        {"update", "frozen", "modified"});
   const double contraction = cli.number("--refactor-contraction", 0.02,
                                         "modified Newton refactorizes when an increment exceeds this times the previous one",
-                                        examples::Range::positive(1.0));
+                                        study::Range::positive(1.0));
   const double tolerance = cli.number("--tolerance", 1e-16, "Newton: |[dq, h^2 beta dlambda]|^2",
-                                      examples::newton_tolerances);
+                                      study::newton_tolerances);
   const int record_every = cli.integer("--record-every", 10, "steps between HDF5 records", 1);
   const std::string out = cli.output_folder("--out", "results/ancf_double_pendulum", "output folder");
   cli.applies_only_when("--refactor-contraction", "--iteration-matrix", {"modified"});  // modified Newton's test
   if (!cli.finish()) return 0;
-  examples::require_memory(static_cast<double>(elements_oa) + elements_ab, examples::memory_use::ancf_double_pendulum,
-                           "options --elements-oa, --elements-ab");  // the two links together
-  examples::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  study::require_memory(static_cast<double>(elements_oa) + elements_ab, examples::memory_use::ancf_double_pendulum,
+                        "options --elements-oa, --elements-ab");  // the two links together
+  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
 
   // 2. The two links (001 §6), OA along +X from the origin, AB along +Y from A.
   const auto preprocessing_start = std::chrono::steady_clock::now();
@@ -66,15 +59,13 @@ int main(int argc, char** argv) try {
   const Eigen::Vector3d gravity(0, 0, -9.81), A(oa, 0, 0);
   core::Model model;
   model.set_gravity(gravity);
-  const core::AncfElementKind kind = element == "24" ? core::AncfElementKind::standard_24 : core::AncfElementKind::higher_order_30;
-  const core::AncfForceMethod method = force == "invariant" ? core::AncfForceMethod::invariant : core::AncfForceMethod::gerstmayr;
   const auto section = core::SectionIntegrals::circle(radius);
   const core::AncfBeam link_oa = core::add_ancf_beam(
-      model, {.end = A, .y_direction = Eigen::Vector3d::UnitY(), .elements = elements_oa, .kind = kind,
-              .method = method, .material = material, .section = section});
+      model, {.end = A, .y_direction = Eigen::Vector3d::UnitY(), .elements = elements_oa, .kind = ancf.kind(),
+              .method = ancf.method(), .material = material, .section = section});
   const core::AncfBeam link_ab = core::add_ancf_beam(
       model, {.start = A, .end = A + Eigen::Vector3d(0, ab, 0), .y_direction = -Eigen::Vector3d::UnitX(),
-              .elements = elements_ab, .kind = kind, .method = method, .material = material, .section = section});
+              .elements = elements_ab, .kind = ancf.kind(), .method = ancf.method(), .material = material, .section = section});
 
   // 3. Ball joints at O (ground) and A (between the links' end nodes).
   solvers::ConstraintList joints;
@@ -102,91 +93,48 @@ int main(int argc, char** argv) try {
                                         .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8,
                                         .modified_newton_contraction = contraction});
   integrator.initialize();
-  const double initial_energy = integrator.energies().total();
 
-  // 5. Integrate and record.
+  // 5. Record every --record-every steps: A, B, the energies and the drift; the summary's
+  //    extremes at every step.
+  study::Recorder rec(integrator, {.folder = out, .name = "ancf_double_pendulum", .time_step = h,
+                                   .schedule = study::Schedule::every_steps(record_every), .csv_digits = 12});
+  rec.attributes({{"example", "ancf_double_pendulum"}, {"element", ancf.element}, {"force", ancf.force}});
+  const study::Scalar residual = rec.constraint_residual(
+      {.description = "largest violation |Phi|_inf of the joints after the step", .every_step = true});
+  const study::Scalar drift = rec.energy_drift(
+      energy_scale, {.description = "(E - E(0)) / (the potential released by both links falling from the horizontal), "
+                                    "a fraction",
+                     .every_step = true});
+  rec.total_energy();
+  rec.energy_balance();
+  rec.newton_iterations();
   const int samples_oa = 10 * elements_oa + 1, samples_ab = 10 * elements_ab + 1;
-  core::ResultsWriter results(out + "/ancf_double_pendulum.h5",
-                              {.node_count = 0, .velocities = false,
-                               .scalars = examples::followed_by<core::ResultsQuantity>(
-                                   {{.name = "total_energy", .unit = "J", .description = "kinetic + strain energy + gravity potential"},
-                                    {.name = "energy_drift", .unit = "1",
-                                     .description = "(E - E(0)) / (the potential released by both links falling from the horizontal), a fraction"},
-                                    {.name = "constraint_residual", .unit = "m",
-                                     .description = "largest violation |Phi|_inf of the joints after the step"},
-                                    {.name = "newton_iterations", .unit = "1",
-                                     .description = "Newton iterations (linear solves) of the step", .integer = true}},
-                                   examples::energy_balance_layout()),
-                               .probes = {{.name = "A", .unit = "m", .description = "the joint A (end of OA), inertial frame"},
-                                          {.name = "B", .unit = "m", .description = "the free end B, inertial frame"}},
-                               .centerline_points = {samples_oa, samples_ab}});
-  results.write_attribute("example", "ancf_double_pendulum");
-  results.write_attribute("element", element);
-  results.write_attribute("force", force);
-  results.write_attribute("time_step", h);
-  std::ofstream csv(out + "/ancf_double_pendulum.csv");
-  csv.precision(12);
-  csv << "t,A_x,A_y,A_z,B_x,B_y,B_z,kinetic_energy,strain_energy,gravity_potential,total_energy,energy_drift,"
-         "constraint_residual,newton_iterations," << examples::energy_balance_csv_columns << '\n';
-  double max_drift = 0.0, max_residual = 0.0;
-  long step = 0;
-  auto record = [&]() {
-    const core::Configuration& q = model.state();
-    const Eigen::Vector3d a = core::ancf_node_position(q, link_oa.nodes.back());
-    const Eigen::Vector3d b = core::ancf_node_position(q, link_ab.nodes.back());
-    const solvers::Energies energy = integrator.energies();
-    const double drift = (energy.total() - initial_energy) / energy_scale;
-    const double residual = integrator.constraint_residual();
-    max_drift = std::max(max_drift, std::abs(drift));
-    max_residual = std::max(max_residual, residual);
-    if (step % record_every != 0) return;
-    csv << integrator.time() << ',' << a.x() << ',' << a.y() << ',' << a.z() << ',' << b.x() << ',' << b.y() << ','
-        << b.z() << ',' << energy.kinetic << ',' << energy.strain << ',' << energy.gravity << ',' << energy.total()
-        << ',' << drift << ',' << residual << ',' << integrator.last_step_iterations();
-    examples::write_energy_balance_csv(csv, energy);
-    csv << '\n';
-    results.append({.time = integrator.time(),
-                    .scalars = examples::followed_by<double>(
-                        {energy.total(), drift, residual, static_cast<double>(integrator.last_step_iterations())},
-                        examples::energy_balance_values(energy)),
-                    .probes = {a, b},
-                    .centerlines = {core::sample_ancf_centerline(q, link_oa, samples_oa),
-                                    core::sample_ancf_centerline(q, link_ab, samples_ab)}});
-  };
-  record();
-  core::ProgressBar progress(t_end, "ancf_double_pendulum");
-  while (integrator.time() < t_end - 0.5 * h) {
-    integrator.step();
-    ++step;
-    record();
-    progress.update(integrator.time(), integrator.counters().steps);
-  }
-  progress.finish();
-  results.close();
-  const solvers::DynamicCounters& counters = integrator.counters();
+  rec.centerline(samples_oa, [&](const study::State& s) { return core::sample_ancf_centerline(s.q, link_oa, samples_oa); });
+  rec.centerline(samples_ab, [&](const study::State& s) { return core::sample_ancf_centerline(s.q, link_ab, samples_ab); });
+  rec.vector({.name = "A", .unit = "m", .description = "the joint A (end of OA), inertial frame", .csv = "A_x,A_y,A_z"},
+             [&](const study::State& s) { return core::ancf_node_position(s.q, link_oa.nodes.back()); });
+  rec.vector({.name = "B", .unit = "m", .description = "the free end B, inertial frame", .csv = "B_x,B_y,B_z"},
+             [&](const study::State& s) { return core::ancf_node_position(s.q, link_ab.nodes.back()); });
+  rec.csv({"A", "B", "kinetic_energy", "strain_energy", "gravity_potential", "total_energy", "energy_drift",
+           "constraint_residual", "newton_iterations", "external_work", "numerical_dissipation"});
+  rec.run(t_end);
+  rec.close();
 
-  // 6. Report.
+  // 6. The summary.
+  const solvers::DynamicCounters& counters = integrator.counters();
   const Eigen::Vector3d b = core::ancf_node_position(model.state(), link_ab.nodes.back());
-  std::printf("ancf_double_pendulum, %s (%s), mesh (%d, %d), h = %g s, t = %g s: %ld steps, %ld Newton iterations, "
-              "preprocessing %.4f s, simulation %.2f s; B (%.6f, %.6f, %.6f) m, max energy drift %.2e of %.3f J, "
-              "max constraint residual %.2e m\n",
-              element.c_str(), force.c_str(), elements_oa, elements_ab, h, integrator.time(), counters.steps,
-              counters.newton_iterations, preprocessing, counters.wall_seconds, b.x(), b.y(), b.z(), max_drift,
-              energy_scale, max_residual);
-  examples::JsonSummary summary;
-  summary.add("element", element).add("force", force).add("elements_oa", elements_oa).add("elements_ab", elements_ab)
+  output::JsonSummary summary;
+  summary.add("element", ancf.element).add("force", ancf.force).add("elements_oa", elements_oa).add("elements_ab", elements_ab)
       .add("h", h).add("t_end", integrator.time()).add("iteration_matrix", strategy);
   if (strategy == "modified") summary.add("refactor_contraction", contraction);  // only the options the run used
   summary.add("tolerance", tolerance)
-      .add("factorizations", static_cast<int>(counters.factorizations))
-      .add("steps", static_cast<int>(counters.steps))
-      .add("newton_iterations", static_cast<int>(counters.newton_iterations))
-      .add("max_constraint_residual", max_residual).add("max_energy_drift", max_drift)
+      .add("factorizations", counters.factorizations).add("steps", counters.steps)
+      .add("newton_iterations", counters.newton_iterations)
+      .add("max_constraint_residual", residual.max()).add("max_energy_drift", drift.max_abs())
       .add("B_x", b.x()).add("B_y", b.y()).add("B_z", b.z())
       .add("preprocessing_s", preprocessing).add("wall_s", counters.wall_seconds)
       .print();
   return 0;
 } catch (const std::exception& error) {
-  std::fprintf(stderr, "%s\n", error.what());
-  return 1;
+  return study::exit_failure(error);
 }

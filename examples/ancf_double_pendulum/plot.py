@@ -8,10 +8,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import column, plt, read_results_csv, results_folder, save_figure  # noqa: E402
+from plotting import column, load_results, plt, save_figure  # noqa: E402
 
-folder = results_folder("results/ancf_double_pendulum")
-rows = read_results_csv(folder, "ancf_double_pendulum.csv")
+folder, rows = load_results("results/ancf_double_pendulum", "ancf_double_pendulum.csv")
 t = column(rows, "t")
 fig = plt.figure(figsize=(12, 4.5))
 ax = fig.add_subplot(1, 3, 1, projection="3d")
