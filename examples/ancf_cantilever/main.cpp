@@ -23,34 +23,29 @@
 //   summary.
 #include <spar/spar.hpp>
 
-#include <cli.hpp>
-#include <static_stability.hpp>
+#include <ancf_options.hpp>
+#include <memory_use.hpp>
 
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <numbers>
 
 using namespace spar;
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
-  examples::CommandLine cli(argc, argv, "ancf_cantilever: paper 001's static cantilever (Table 1)");
-  const std::string element = cli.text("--element", "24", "24 | 30 (ANCF coordinates per element) | gebt",
-                                       {"24", "30", "gebt"});
-  const std::string force = cli.text("--force", "gerstmayr", "invariant (method I) | gerstmayr (method II)",
-                                     {"invariant", "gerstmayr"});
+  study::CommandLine cli(argc, argv, "ancf_cantilever: paper 001's static cantilever (Table 1)");
+  const examples::AncfChoice ancf_element = examples::ancf_options(cli, true);
+  const std::string& element = ancf_element.element;
   const int elements = cli.elements("--elements", 8, "number of elements", 1, examples::memory_use::ancf_cantilever);
   const double poisson = cli.number("--poisson", 0.33, "Poisson's ratio", {-1, 0.5, true, true});
   const std::string section_kind = cli.text("--section", "exact", "exact (moments to order 4) | paper (A, I only)",
                                             {"exact", "paper"});
   const std::string remedy = cli.text("--remedy", "none", "Poisson locking remedy: none | uniaxial-bending",
                                       {"none", "uniaxial-bending"});
-  const double tip_force = cli.number("--force-n", 10.0, "tip force along -Y [N], not 0", examples::Range::between(-1e6, 1e6));
+  const double tip_force = cli.number("--force-n", 10.0, "tip force along -Y [N], not 0", study::Range::between(-1e6, 1e6));
   const std::string out = cli.output_folder("--out", "results/ancf_cantilever", "output folder");
   //    The ANCF element's options mean nothing to the geometrically exact beam.
-  for (const char* ancf_option : {"--force", "--section", "--remedy"})
+  for (const char* ancf_option : {"--section", "--remedy"})
     cli.applies_only_when(ancf_option, "--element", {"24", "30"});
   if (!cli.finish()) return 0;
   //    The example compares the deflection with F L³/(3EI): with no force there is none to compare.
@@ -68,18 +63,18 @@ int main(int argc, char** argv) try {
   core::AncfBeam ancf;
   const int gebt_index = [&] {
     if (element == "gebt") {
-      const int b = model.add_beam(
+      const int b = core::add_beam(
+          model,
           {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), elements, 3),
            .stiffness = core::SectionStiffness::from(aluminium, core::CrossSection::circle(2 * radius, poisson))});
-      root = model.beam(b).node(0);
-      tip = model.beam(b).node(model.beam(b).control_point_count() - 1);
+      root = core::beam(model, b).node(0);
+      tip = core::beam(model, b).node(core::beam(model, b).control_point_count() - 1);
       return b;
     }
     const auto section = core::SectionIntegrals::circle(radius);
     ancf = core::add_ancf_beam(
         model, {.end = Eigen::Vector3d(length, 0, 0), .elements = elements,
-                .kind = element == "24" ? core::AncfElementKind::standard_24 : core::AncfElementKind::higher_order_30,
-                .method = force == "invariant" ? core::AncfForceMethod::invariant : core::AncfForceMethod::gerstmayr,
+                .kind = ancf_element.kind(), .method = ancf_element.method(),
                 .remedy = remedy == "none" ? core::AncfLockingRemedy::none : core::AncfLockingRemedy::uniaxial_bending,
                 .material = aluminium,
                 .section = section_kind == "exact" ? section : section.truncated_to_second_order()});
@@ -91,14 +86,12 @@ int main(int argc, char** argv) try {
   // 3. Clamp the root (all coordinates of its block) and load the tip along −Y.
   model.fix(root);
   const Eigen::Vector3d load(0, -tip_force, 0);
-  if (gebt_index >= 0) model.add_load(core::NodalForce{.node = tip, .force = load});
+  if (gebt_index >= 0) core::add_load(model, core::NodalForce{.node = tip, .force = load});
   else core::add_ancf_nodal_force(model, tip, load);
 
   // 4. Solve (one load step suffices for this small deflection; Newton converges quadratically).
-  const auto start = std::chrono::steady_clock::now();
   const solvers::StaticReport report = solvers::solve_static(model, {.load_steps = 1});
-  examples::warn_if_unstable(report);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  study::warn_if_unstable(report);
 
   // 5. The tip deflection, and its ratio to Euler-Bernoulli's: the tip's displacement along the
   //    force over F L³/(3EI), the same for a force along −Y (--force-n > 0) and its mirror image.
@@ -109,17 +102,17 @@ int main(int argc, char** argv) try {
 
   // 6. Write the deformed centerline (CSV and HDF5).
   const int samples = 10 * elements + 1;
-  const Eigen::MatrixXd centerline = gebt_index >= 0 ? model.beam(gebt_index).sample_centerline(model.state(), samples)
+  const Eigen::MatrixXd centerline = gebt_index >= 0 ? core::beam(model, gebt_index).sample_centerline(model.state(), samples)
                                                      : core::sample_ancf_centerline(model.state(), ancf, samples);
-  std::ofstream csv(out + "/centerline.csv");
-  csv << "s,x,y,z,euler_bernoulli_y\n";
+  output::CsvFile csv(out + "/centerline.csv", "s,x,y,z,euler_bernoulli_y", 6);
   for (int i = 0; i < samples; ++i) {
     const double s = length * i / (samples - 1);
     const double theory_y = -tip_force * s * s * (3 * length - s) / (6 * EI);
-    csv << s << ',' << centerline(i, 0) << ',' << centerline(i, 1) << ',' << centerline(i, 2) << ',' << theory_y << '\n';
+    csv.row({s, centerline(i, 0), centerline(i, 1), centerline(i, 2), theory_y});
   }
+  csv.close();
   // One "step" of the results file (docs/output.md): the deformed centerline as an XDMF polyline.
-  core::ResultsWriter results(out + "/ancf_cantilever.h5",
+  output::ResultsWriter results(out + "/ancf_cantilever.h5",
                               {.node_count = 0, .velocities = false,
                                .scalars = {{.name = "tip_deflection", .unit = "m",
                                             .description = "magnitude of the tip's displacement under the load"}},
@@ -128,30 +121,22 @@ int main(int argc, char** argv) try {
   results.write_attribute("example", "ancf_cantilever");
   results.write_attribute("element", element);
   if (gebt_index < 0) {
-    results.write_attribute("force", force);
+    results.write_attribute("force", ancf_element.force);
     results.write_attribute("remedy", remedy);
   }
   results.write_attribute("poisson_ratio", poisson);
   results.append({.time = 1.0, .scalars = {deflection}, .probes = {tip_position}, .centerlines = {centerline}});
   results.close();
 
-  // 7. Report.
-  const std::string label = element == "gebt" ? "geometrically exact beam"
-                                               : element + "-coordinate ANCF element (" + force + ", remedy " + remedy + ")";
-  std::printf("%s, %d elements, nu = %.3g%s: tip deflection %.6f mm, Euler-Bernoulli %.6f mm (ratio %.4f); "
-              "paper: I 4.1331, II 4.1328, III 5.7921 mm; %d Newton iterations, %.3f s\n",
-              label.c_str(), elements, poisson, gebt_index >= 0 ? "" : (", " + section_kind + " section").c_str(),
-              1e3 * deflection, 1e3 * std::abs(theory), ratio, report.newton_iterations, wall);
-  //    Only the options the run used: the ANCF element's for the ANCF element.
-  examples::JsonSummary summary;
+  // 7. The summary: only the options the run used (the ANCF element's for the ANCF element).
+  output::JsonSummary summary;
   summary.add("element", element);
-  if (gebt_index < 0) summary.add("force", force).add("section", section_kind).add("remedy", remedy);
+  if (gebt_index < 0) summary.add("force", ancf_element.force).add("section", section_kind).add("remedy", remedy);
   summary.add("elements", elements).add("poisson", poisson).add("tip_deflection", deflection).add("euler_bernoulli", theory)
-      .add("ratio", ratio).add("newton_iterations", report.newton_iterations).add("wall_s", wall)
+      .add("ratio", ratio).add("newton_iterations", report.newton_iterations).add("wall_s", report.wall_seconds)
       .add("unstable_directions", report.unstable_directions)
       .print();
   return 0;
 } catch (const std::exception& error) {
-  std::fprintf(stderr, "%s\n", error.what());
-  return 1;
+  return study::exit_failure(error);
 }

@@ -8,10 +8,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import column, figure_grid, read_results_csv, results_folder, save_figure  # noqa: E402
+from plotting import column, figure_grid, load_results, save_figure  # noqa: E402
 
-folder = results_folder("results/ancf_cantilever")
-rows = read_results_csv(folder, "centerline.csv")
+folder, rows = load_results("results/ancf_cantilever", "centerline.csv")
 x = column(rows, "x")
 y = [1e3 * v for v in column(rows, "y")]
 s = column(rows, "s")
