@@ -22,40 +22,30 @@
 //   jumps at the events are the merges'. The last line of stdout is a JSON summary.
 #include <spar/spar.hpp>
 
-#include <cli.hpp>
-#include <sliding_mass_run.hpp>
-
-#include <cstdio>
-#include <numbers>
+#include <memory_use.hpp>
+#include <sliding_mass.hpp>
 
 using namespace spar;
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
-  examples::CommandLine cli(argc, argv, "suspended_beam: a lumped mass sliding on a pinned-pinned beam (000 §6.2)");
-  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 3, 2.0, examples::memory_use::suspended_beam);
+  study::CommandLine cli(argc, argv, "suspended_beam: a lumped mass sliding on a pinned-pinned beam (000 §6.2)");
+  const examples::SlidingMassOptions o = examples::sliding_mass_options(
+      cli, {.example = "suspended_beam", .elements = 3, .t_end = 2.0, .memory = examples::memory_use::suspended_beam});
   const std::string slopes = cli.text("--slopes", "continuous",
                                       "at the sliding node (000 eq. (40)): continuous (one slope) or discontinuous "
                                       "(a slope per side, equal magnitudes: a hinge)",
                                       {"continuous", "discontinuous"});
-  const std::string out = cli.output_folder("--out", "results/suspended_beam", "output folder");
   if (!cli.finish()) return 0;
-  examples::time_steps(o.h, o.t_end);  // a span of no steps or of too many is refused
 
-  // 2. The beam, the sliding mass and the supports.
-  const double radius = 0.01, young = 20e6, density = 7200;
-  const double area = std::numbers::pi * radius * radius, inertia = area * radius * radius / 4;
+  // 2. The beam and the sliding mass; with --slopes discontinuous a slope per side of the sliding
+  //    node, of equal magnitudes (000 eqs. (39)–(40)).
   core::Model model;
   core::SlidingCable<2> cable(model, {.length = 1.0, .elements = o.elements,
-                                      .section = {.axial_stiffness = young * area,
-                                                  .bending_stiffness = young * inertia,
-                                                  .mass_per_length = density * area},
+                                      .section = examples::circular_section(0.01, 20e6, 7200),
                                       .slider_position = 0.1, .slider_mass = 5.0,
                                       .rational = o.kind == "ale-rancf",
                                       .two_sided_slider = slopes == "discontinuous"});
-  model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
-  examples::pin_both_ends(cable, model);
-  // A slope per side of the sliding node, of equal magnitudes (000 eqs. (39)–(40)).
   solvers::ConstraintList constraints;
   if (slopes == "discontinuous")
     constraints.push_back(std::make_unique<joints::SlidingNodeSlopes>(cable.chain()[cable.slider()],
@@ -63,17 +53,11 @@ int main(int argc, char** argv) try {
                                                                       joints::SlopeCondition::discontinuous,
                                                                       model.state()));
 
-  // 3. The integrator, from rest.
-  solvers::GeneralizedAlpha integrator(model, std::move(constraints), {.time_step = o.h, .spectral_radius = o.rho_infinity,
-                                                   .iteration_matrix = solvers::iteration_matrix_from_string(o.strategy),
-                                                   .tolerance = 1e-16, .residual_tolerance = 1e-9});
-  integrator.initialize();
-
-  // 4. Integrate, control the lengths, record, report (examples/common/sliding_mass_run.hpp).
-  examples::run_sliding_mass(cable, model, integrator,
-                             {.example = "suspended_beam", .out = out, .options = o});
+  // 3. Integrate from rest with both ends pinned (positions fixed, slopes free), control the
+  //    lengths, record, report (examples/common/sliding_mass.hpp).
+  examples::run_sliding_mass(model, cable, std::move(constraints),
+                             {.options = o, .supports = {.left = 2, .right = 2}});
   return 0;
 } catch (const std::exception& error) {
-  std::fprintf(stderr, "%s\n", error.what());
-  return 1;
+  return study::exit_failure(error);
 }
