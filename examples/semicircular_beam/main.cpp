@@ -23,22 +23,19 @@
 //   stdout is a JSON summary.
 #include <spar/spar.hpp>
 
-#include <cli.hpp>
-#include <sliding_mass_run.hpp>
+#include <memory_use.hpp>
+#include <sliding_mass.hpp>
 
-#include <cmath>
-#include <cstdio>
 #include <numbers>
 
 using namespace spar;
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
-  examples::CommandLine cli(argc, argv, "semicircular_beam: a lumped mass sliding on a suspended semicircular beam (000 §6.3)");
-  const examples::SlidingMassOptions o = examples::sliding_mass_options(cli, 16, 3.0, examples::memory_use::semicircular_beam);
-  const std::string out = cli.output_folder("--out", "results/semicircular_beam", "output folder");
+  study::CommandLine cli(argc, argv, "semicircular_beam: a lumped mass sliding on a suspended semicircular beam (000 §6.3)");
+  const examples::SlidingMassOptions o = examples::sliding_mass_options(
+      cli, {.example = "semicircular_beam", .elements = 16, .t_end = 3.0, .memory = examples::memory_use::semicircular_beam});
   if (!cli.finish()) return 0;
-  examples::time_steps(o.h, o.t_end);  // a span of no steps or of too many is refused
 
   // 2. The stress-free shape: the lower semicircle, cut at the first mesh's material coordinates.
   const double R = 2.0, length = std::numbers::pi * R;
@@ -64,33 +61,21 @@ int main(int argc, char** argv) try {
     return core::CableReference(pieces, x);
   };
 
-  // 3. The beam, the sliding mass and the supports.
-  const double radius = 0.02, young = 200e6, density = 7200;
-  const double area = std::numbers::pi * radius * radius, inertia = area * radius * radius / 4;
+  // 3. The beam and the sliding mass.
   core::Model model;
   const bool rational = o.kind == "ale-rancf";
   core::SlidingCable<2> cable(model, {.length = length, .elements = o.elements,
-                                      .section = {.axial_stiffness = young * area,
-                                                  .bending_stiffness = young * inertia,
-                                                  .mass_per_length = density * area},
+                                      .section = examples::circular_section(0.02, 200e6, 7200),
                                       .slider_position = length / 16, .slider_mass = 0.8,
                                       .rational = rational,
                                       .shape = rational ? std::function<core::CableReference(const std::vector<double>&)>(exact_arc)
                                                         : std::function<core::CableReference(const std::vector<double>&)>(hermite_arc)});
-  model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
-  examples::pin_both_ends(cable, model);
 
-  // 4. The integrator, from rest.
-  solvers::GeneralizedAlpha integrator(model, {}, {.time_step = o.h, .spectral_radius = o.rho_infinity,
-                                                   .iteration_matrix = solvers::iteration_matrix_from_string(o.strategy),
-                                                   .tolerance = 1e-16, .residual_tolerance = 1e-9});
-  integrator.initialize();
-
-  // 5. Integrate, control the lengths, record, report (examples/common/sliding_mass_run.hpp).
-  examples::run_sliding_mass(cable, model, integrator,
-                             {.example = "semicircular_beam", .out = out, .options = o});
+  // 4. Integrate from rest with both ends pinned (positions fixed, slopes free), control the
+  //    lengths, record, report (examples/common/sliding_mass.hpp).
+  examples::run_sliding_mass(model, cable, {},
+                             {.options = o, .supports = {.left = 2, .right = 2}});
   return 0;
 } catch (const std::exception& error) {
-  std::fprintf(stderr, "%s\n", error.what());
-  return 1;
+  return study::exit_failure(error);
 }
