@@ -18,13 +18,9 @@
 //   line of stdout is a JSON summary.
 #include <spar/spar.hpp>
 
-#include <cli.hpp>
-#include <static_stability.hpp>
+#include <memory_use.hpp>
 
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <numbers>
 
 using namespace spar;
@@ -64,45 +60,46 @@ Eigen::Vector2d elastica_tip(double load, double length) {
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
-  examples::CommandLine cli(argc, argv,
+  study::CommandLine cli(argc, argv,
                             "cantilever_statics: roll-up and large-deflection cantilever (issue 4)");
   const std::string load_case = cli.text("--case", "rollup", "rollup | tip-load", {"rollup", "tip-load"});
   const double load = cli.number("--load", 2 * std::numbers::pi,
                                  "M L/EI (rollup) or P L^2/EI (tip-load)",
-                                 examples::Range::between(-100, 100));
+                                 study::Range::between(-100, 100));
   const int elements = cli.elements("--elements", 16, "number of NURBS elements", 1, examples::memory_use::cantilever_statics);
   const int degree = cli.integer("--degree", 3, "NURBS degree p (C^{p-1} continuity)", 1, iga::max_degree);
   const int load_steps = cli.integer("--steps", 10, "initial number of load steps", 1, 100000);
-  const double length = cli.number("--length", 1.0, "beam length L [m]", examples::Range::positive(1e3));
+  const double length = cli.number("--length", 1.0, "beam length L [m]", study::Range::positive(1e3));
   const double width = cli.number("--width", 0.01, "side of the square steel section [m]",
-                                    examples::Range::positive(1));
+                                    study::Range::positive(1));
   const std::string out = cli.output_folder("--out", "results/cantilever_statics", "output folder");
   if (!cli.finish()) return 0;
-  examples::require_slender_beam(length, "--length", width, "--width", width, "--width");  // before solving
+  study::require_slender_beam(length, "--length", width, "--width", width, "--width");  // before solving
 
   // 2. Build the beam: straight along +X (open-uniform C^{p-1} NURBS), steel square section.
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   const core::SectionStiffness stiffness =
       core::SectionStiffness::from(steel, core::CrossSection::rectangle(width, width, 0.3));
   core::Model model;
-  const int b = model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), elements, degree),
-                                    .stiffness = stiffness});
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const int b = core::add_beam(
+      model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), elements, degree),
+              .stiffness = stiffness});
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   const int root = beam.node(0), tip = beam.node(beam.control_point_count() - 1);
 
   // 3. Clamp the root and load the tip.
   model.fix(root);
   const double EI = stiffness.bending_3;
   if (load_case == "rollup")
-    model.add_load(core::NodalMoment{.node = tip, .moment = Eigen::Vector3d(0, 0, load * EI / length),
+    core::add_load(model, core::NodalMoment{.node = tip, .moment = Eigen::Vector3d(0, 0, load * EI / length),
                                      .frame = core::MomentFrame::material});
   else
-    model.add_load(core::NodalForce{.node = tip, .force = Eigen::Vector3d(0, load * EI / (length * length), 0)});
+    core::add_load(model, core::NodalForce{.node = tip, .force = Eigen::Vector3d(0, load * EI / (length * length), 0)});
 
   // 4. Solve.
   const core::Configuration undeformed_state = model.state();
   const solvers::StaticReport report = solvers::solve_static(model, {.load_steps = load_steps});
-  examples::warn_if_unstable(report);
+  study::warn_if_unstable(report);
 
   // 5. Compare with the analytical solution.
   const Eigen::Vector3d tip_position = model.state().position[tip] - model.state().position[root];
@@ -122,14 +119,12 @@ int main(int argc, char** argv) try {
   const int samples = 10 * elements + 1;
   const Eigen::MatrixXd centerline = beam.sample_centerline(model.state(), samples);
   const Eigen::MatrixXd undeformed = beam.sample_centerline(undeformed_state, samples);
-  std::ofstream csv(out + "/centerline.csv");
-  csv << "u,x,y,z,x0,y0,z0\n";
-  for (int i = 0; i < samples; ++i) {
-    const double u = static_cast<double>(i) / (samples - 1);
-    csv << u << ',' << centerline(i, 0) << ',' << centerline(i, 1) << ',' << centerline(i, 2) << ','
-        << undeformed(i, 0) << ',' << undeformed(i, 1) << ',' << undeformed(i, 2) << '\n';
-  }
-  core::Hdf5File h5(out + "/cantilever_statics.h5");
+  output::CsvFile csv(out + "/centerline.csv", "u,x,y,z,x0,y0,z0", 6);
+  for (int i = 0; i < samples; ++i)
+    csv.row({static_cast<double>(i) / (samples - 1), centerline(i, 0), centerline(i, 1), centerline(i, 2),
+             undeformed(i, 0), undeformed(i, 1), undeformed(i, 2)});
+  csv.close();
+  output::Hdf5File h5(out + "/cantilever_statics.h5");
   h5.write_attribute("case", load_case);
   h5.write_attribute("load", load);
   h5.write("centerline/deformed", centerline, "m",
@@ -140,14 +135,8 @@ int main(int argc, char** argv) try {
     control_points.row(I) = model.state().position[beam.node(I)].transpose();
   h5.write("control_points", control_points, "m", "deformed control points (the beam's nodes), root to tip");
 
-  // 7. Report.
-  std::printf("%s, load %.6g, p = %d, %d elements: tip (%.9f, %.9f, %.9f) m, reference "
-              "(%.9f, %.9f, %.9f) m, |error|/L = %.3e, %zu load steps, %d Newton iterations, "
-              "%.3f s\n",
-              load_case.c_str(), load, degree, elements, tip_position.x(), tip_position.y(),
-              tip_position.z(), reference.x(), reference.y(), reference.z(), error,
-              report.steps.size(), report.newton_iterations, report.wall_seconds);
-  examples::JsonSummary()
+  // 7. The summary.
+  output::JsonSummary()
       .add("case", load_case).add("load", load).add("degree", degree).add("elements", elements)
       .add("length", length).add("tip_x", tip_position.x()).add("tip_y", tip_position.y())
       .add("tip_z", tip_position.z()).add("reference_tip_x", reference.x())
@@ -158,6 +147,5 @@ int main(int argc, char** argv) try {
       .print();
   return 0;
 } catch (const std::exception& error) {
-  std::fprintf(stderr, "%s\n", error.what());
-  return 1;
+  return study::exit_failure(error);
 }

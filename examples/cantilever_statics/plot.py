@@ -8,10 +8,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import column, figure_grid, read_results_csv, results_folder, save_figure  # noqa: E402
+from plotting import column, figure_grid, load_results, save_figure  # noqa: E402
 
-folder = results_folder("results/cantilever_statics")
-rows = read_results_csv(folder, "centerline.csv")
+folder, rows = load_results("results/cantilever_statics", "centerline.csv")
 x = column(rows, "x")
 y = column(rows, "y")
 x0 = [float(r["x0"]) for r in rows]
