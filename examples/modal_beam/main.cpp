@@ -18,13 +18,11 @@
 #include <spar/spar.hpp>
 #include <spar/joints/joints.hpp>
 
-#include <cli.hpp>
+#include <memory_use.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <numbers>
 
 using namespace spar;
@@ -45,12 +43,12 @@ double timoshenko_pinned(int k, double length, double EI, double kGA, double rho
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
-  examples::CommandLine cli(argc, argv, "modal_beam: modes of a pinned-pinned steel beam against Timoshenko's");
+  study::CommandLine cli(argc, argv, "modal_beam: modes of a pinned-pinned steel beam against Timoshenko's");
   //    The ranges of the other examples (docs/errors.md): lengths up to 10³ m (--length 1e300 ended
   //    in "the matrix is not orthogonal"), section sides up to 1 m.
-  const double length = cli.number("--length", 1.0, "beam length [m]", examples::Range::positive(1e3));
-  const double width = cli.number("--width", 0.02, "section width, along the section axis 2 (Y) [m]", examples::Range::positive(1));
-  const double height = cli.number("--height", 0.01, "section height, along the section axis 3 (Z) [m]", examples::Range::positive(1));
+  const double length = cli.number("--length", 1.0, "beam length [m]", study::Range::positive(1e3));
+  const double width = cli.number("--width", 0.02, "section width, along the section axis 2 (Y) [m]", study::Range::positive(1));
+  const double height = cli.number("--height", 0.01, "section height, along the section axis 3 (Z) [m]", study::Range::positive(1));
   const int elements = cli.elements("--elements", 64, "cubic NURBS elements", 1, examples::memory_use::modal_beam);
   const int mode_count = cli.integer("--modes", 12, "lowest modes to compute", 1, 1000);
   const std::string out = cli.output_folder("--out", "results/modal_beam", "output folder");
@@ -59,18 +57,18 @@ int main(int argc, char** argv) try {
   //    loses digits as (L/t)²: the bending modes' largest relative error is 2.5e-6, 2.4e-4, 2.2e-3
   //    at L/t = 100, 10³, 3·10³ (64 elements, L = 10⁻³ to 10³ m) and 5-68 % at 10⁴, so at most 3·10³.
   const bool width_thinner = width <= height;
-  examples::require_slender_beam(length, "--length", std::min(width, height), width_thinner ? "--width" : "--height",
-                                 std::max(width, height), width_thinner ? "--height" : "--width", 3e3);
+  study::require_slender_beam(length, "--length", std::min(width, height), width_thinner ? "--width" : "--height",
+                              std::max(width, height), width_thinner ? "--height" : "--width", 3e3);
 
   // 2. The beam and its two pins.
   const core::Material steel{.young_modulus = 210e9, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection section = core::CrossSection::rectangle(width, height, steel.poisson_ratio);
   core::Model model;
-  const int b = model.add_beam({.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(),
+  const int b = core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(),
                                                                     Eigen::Vector3d(length, 0, 0), elements, 3),
                                 .stiffness = core::SectionStiffness::from(steel, section),
                                 .inertia = core::SectionInertia::from(steel, section)});
-  const core::GeometricallyExactBeam& beam = model.beam(b);
+  const core::GeometricallyExactBeam& beam = core::beam(model, b);
   const core::Configuration& q = model.state();
   joints::SphericalJoint left(joints::Attachment{beam.node(0)}, joints::Attachment{-1}, q);
   joints::SphericalJoint right(joints::Attachment{beam.node(beam.control_point_count() - 1)},
@@ -82,10 +80,7 @@ int main(int argc, char** argv) try {
   // 4. Match the bending modes with Timoshenko's (both planes, k = 1, 2, …) and report.
   const core::SectionStiffness& C = beam.stiffness();
   const core::SectionInertia& J = beam.inertia();
-  std::filesystem::create_directories(out);
-  std::ofstream csv(out + "/modal_beam.csv");
-  csv.precision(15);
-  csv << "mode,frequency_hz,timoshenko_hz,relative_difference\n";
+  output::CsvFile csv(out + "/modal_beam.csv", "mode,frequency_hz,timoshenko_hz,relative_difference", 15);
   std::printf("modal_beam: %g m, %g x %g mm, %d elements\n  mode   f [Hz]          Timoshenko [Hz]   relative difference\n",
               length, 1e3 * width, 1e3 * height, elements);
   double worst = 0.0;
@@ -129,19 +124,19 @@ int main(int argc, char** argv) try {
       std::printf("  %4d   %-14.8g  %-16.8g  %.2e\n", i + 1, f(i), reference, difference);
     else
       std::printf("  %4d   %-14.8g  %-16s  (not a bending mode)\n", i + 1, f(i), "-");
-    csv << i + 1 << ',' << f(i) << ',' << (bending ? reference : NAN) << ',' << (bending ? difference : NAN) << '\n';
+    csv.row({i + 1.0, f(i), bending ? reference : NAN, bending ? difference : NAN});
   }
   // The control points' displacements of every mode (x, y, z per control point, mode by mode).
-  std::ofstream shapes(out + "/modal_beam_shapes.csv");
-  shapes.precision(15);
-  shapes << "mode,control_point,x0,dx,dy,dz\n";
+  output::CsvFile shapes(out + "/modal_beam_shapes.csv", "mode,control_point,x0,dx,dy,dz", 15);
   for (int i = 0; i < modes.shapes.cols(); ++i)
     for (int cp = 0; cp < beam.control_point_count(); ++cp) {
       const int node = beam.node(cp);
       const Eigen::Vector3d d = modes.shapes.col(i).segment<3>(q.blocks[node].offset);
-      shapes << i + 1 << ',' << cp << ',' << q.position[node].x() << ',' << d.x() << ',' << d.y() << ',' << d.z() << '\n';
+      shapes.row({i + 1.0, static_cast<double>(cp), q.position[node].x(), d.x(), d.y(), d.z()});
     }
-  examples::JsonSummary()
+  csv.close();
+  shapes.close();
+  output::JsonSummary()
       .add("elements", elements).add("modes", static_cast<int>(f.size()))
       .add("bending_modes_matched", matched)
       .add("max_relative_error", matched > 0 ? std::optional<double>(worst) : std::nullopt)
@@ -149,6 +144,5 @@ int main(int argc, char** argv) try {
       .print();
   return 0;
 } catch (const std::exception& error) {
-  std::fprintf(stderr, "%s\n", error.what());
-  return 1;
+  return study::exit_failure(error);
 }

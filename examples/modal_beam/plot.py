@@ -8,11 +8,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
-from plotting import column, figure_grid, read_results_csv, results_folder, save_figure  # noqa: E402
+from plotting import column, figure_grid, load_results, save_figure  # noqa: E402
 
-folder = results_folder("results/modal_beam")
-modes = read_results_csv(folder, "modal_beam.csv")
-shapes = read_results_csv(folder, "modal_beam_shapes.csv")
+folder, modes, shapes = load_results("results/modal_beam", "modal_beam.csv", "modal_beam_shapes.csv")
 
 fig, axes = figure_grid(1, 2, (11, 4.5))
 ax = axes[0]
