@@ -151,7 +151,7 @@ void Recorder::Impl::write_snapshot(int k, Evaluation& e) {
 
 void Recorder::Impl::record(const Channel& channel, Evaluation& e) {
   if (channel.file) write_file(e);
-  if (channel.csv) write_csv(e);
+  if (channel.csv && csv) write_csv(e);  // a CSV only if columns were declared
   if (channel.snapshots >= 0) write_snapshot(channel.snapshots, e);
 }
 

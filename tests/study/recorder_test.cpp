@@ -1,0 +1,169 @@
+// study::Recorder on a run whose motion is known in closed form: a body falling freely,
+//     x(t) = x₀ + ½ g t²,
+// which generalized-α from consistent accelerations reproduces to round-off (tests/output's run
+// test). What the recorder writes (the CSV at its schedule, the results file, states sampled
+// between steps) and what it reduces (last, max, min, spread, the energy drift) are compared with
+// that motion; the declarations it must refuse are refused.
+#include <spar/core/model.hpp>
+#include <spar/elements/rigid_body/rigid_body.hpp>
+#include <spar/solvers/generalized_alpha.hpp>
+#include <spar/study/recorder.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "output_fixtures.hpp"
+
+using namespace spar;
+
+namespace {
+
+const Eigen::Vector3d x0(0.1, 2.0, -0.3), g(0.0, -9.81, 0.0);
+
+/// A body of 2 kg at x0 under gravity, initialized.
+struct FallingBody {
+  core::Model model;
+  int node = 0;
+  std::unique_ptr<solvers::GeneralizedAlpha> integrator;
+
+  explicit FallingBody(double h) {
+    node = core::rigid_body(model, core::add_rigid_body(model, {.center_of_mass = x0, .mass = 2.0,
+                                                               .inertia = Eigen::Matrix3d::Identity()}))
+               .node;
+    model.set_gravity(g);
+    integrator = std::make_unique<solvers::GeneralizedAlpha>(
+        model, solvers::ConstraintList{}, solvers::DynamicOptions{.time_step = h, .tolerance = 1e-24});
+    integrator->initialize();
+  }
+};
+
+Eigen::Vector3d exact(double t) { return x0 + 0.5 * g * t * t; }
+
+/// The rows of a CSV file (header first), each split at its commas.
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::ifstream file(path);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(file, line);) {
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// Round-off of 10 to 40 steps on numbers of O(1): 1e-13 is 100 times what the run test measures.
+constexpr double tolerance = 1e-13;
+
+}  // namespace
+
+TEST_CASE("the recorder writes its CSV and results file at its schedule and reduces every step", "[study]") {
+  const double h = 0.01, t_end = 0.1;
+  FallingBody body(h);
+  const spar::test::ScratchFolder folder("study_recorder");
+  study::Recorder rec(*body.integrator, {.folder = folder.file(""), .name = "fall", .time_step = h,
+                                         .schedule = study::Schedule::every_steps(4).and_last(), .nodes = true,
+                                         .csv_digits = 17, .report = false});
+  rec.attributes({{"example", "falling body"}, {"elements", 0L}});
+  rec.vector({.name = "x", .unit = "m", .description = "the body's position", .csv = "x,y,z"},
+             [&](const study::State& s) { return s.q.position[body.node]; });
+  rec.vector({.name = "planar", .unit = "m", .description = "its X and Y", .csv = "px,py"},
+             [&](const study::State& s) -> Eigen::Vector2d { return s.q.position[body.node].head<2>(); });
+  const study::Scalar height = rec.scalar(
+      {.name = "height", .every_step = true, .spread_from = 0.05, .file = false},
+      [&](const study::State& s) { return s.q.position[body.node].y(); });
+  const study::Scalar drift = rec.energy_drift(1.0, {.description = "E - E(0) in J", .every_step = true});
+  rec.energy_balance();
+  rec.newton_iterations();
+  rec.csv({"x", "height", "planar", "newton_iterations"});
+  rec.run(t_end);
+  rec.close();
+
+  // The CSV: steps 0, 4, 8 and the last, 10; the time first, 17 digits read back exactly.
+  const auto rows = read_csv(folder.file("fall.csv"));
+  REQUIRE(rows.size() == 5);
+  CHECK(rows[0] == std::vector<std::string>{"t", "x", "y", "z", "height", "px", "py", "newton_iterations"});
+  const std::vector<long> steps = {0, 4, 8, 10};
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const double t = std::stod(rows[k + 1][0]);
+    CHECK(std::abs(t - h * static_cast<double>(steps[k])) < tolerance);
+    for (int i = 0; i < 3; ++i) CHECK(std::abs(std::stod(rows[k + 1][1 + i]) - exact(t)(i)) < tolerance);
+    CHECK(rows[k + 1][4] == rows[k + 1][2]);  // height is y
+    CHECK(rows[k + 1][5] == rows[k + 1][1]);
+    CHECK(rows[k + 1][6] == rows[k + 1][2]);
+  }
+  CHECK(rec.states_written() == 4);
+
+  // The results file: the same four states, the planar probe with z = 0, the counters.
+  const spar::test::ReadOnlyFile file(folder.file("fall.h5"));
+  const spar::test::DatasetContents time = file.read("/time"), planar = file.read("/probes/planar");
+  REQUIRE(time.values.size() == 4);
+  CHECK(std::abs(time.values[3] - t_end) < tolerance);
+  CHECK(planar.values[3 * 3 + 2] == 0.0);
+  CHECK(std::abs(planar.values[3 * 3 + 1] - exact(time.values[3]).y()) < tolerance);
+  CHECK(file.has("/scalars/kinetic_energy"));
+  CHECK(file.has("/scalars/physical_dissipation"));
+  CHECK_FALSE(file.has("/scalars/height"));  // file = false
+
+  // The reductions cover every step (every_step), the start included.
+  CHECK(std::abs(height.max() - x0.y()) < tolerance);
+  CHECK(std::abs(height.min() - exact(t_end).y()) < tolerance);
+  CHECK(std::abs(height.last() - exact(t_end).y()) < tolerance);
+  // The spread from t = 0.05 on: the steps 5 … 10.
+  std::vector<double> tail;
+  for (int n = 5; n <= 10; ++n) tail.push_back(exact(h * n).y());
+  double mean = 0.0, sum = 0.0, peak = 0.0;
+  for (const double y : tail) mean += y / static_cast<double>(tail.size());
+  for (const double y : tail) sum += (y - mean) * (y - mean), peak = std::max(peak, std::abs(y - mean));
+  REQUIRE(height.spread());
+  CHECK(std::abs(height.spread()->rms - std::sqrt(sum / static_cast<double>(tail.size()))) < tolerance);
+  CHECK(std::abs(height.spread()->peak - peak) < tolerance);
+  // A falling body keeps its energy: the drift from the start is round-off (|E| ≈ 40 J).
+  CHECK(drift.max_abs() < 1e-11);
+}
+
+TEST_CASE("a sampled schedule records states between the steps, at the given interval", "[study]") {
+  const double h = 0.01, t_end = 0.1;
+  FallingBody body(h);
+  const spar::test::ScratchFolder folder("study_sampled");
+  study::Recorder rec(*body.integrator, {.folder = folder.file(""), .name = "fall", .time_step = h,
+                                         .schedule = study::Schedule::sampled_every(0.025), .csv_digits = 17,
+                                         .report = false});
+  rec.vector({.name = "x", .unit = "m", .description = "the body's position", .csv = "x,y,z"},
+             [&](const study::State& s) { return s.q.position[body.node]; });
+  rec.csv({"x"});
+  rec.run(t_end);
+  rec.close();
+  // t = 0, 0.025, …, 0.1: off the steps, where the cubic Hermite interpolation of the time sampler
+  // is exact for a constant acceleration (docs/dynamics.md D10).
+  const auto rows = read_csv(folder.file("fall.csv"));
+  REQUIRE(rows.size() == 6);
+  for (int k = 0; k < 5; ++k) {
+    const double t = std::stod(rows[k + 1][0]);
+    CHECK(std::abs(t - 0.025 * k) < tolerance);
+    CHECK(std::abs(std::stod(rows[k + 1][2]) - exact(t).y()) < tolerance);
+  }
+}
+
+TEST_CASE("the recorder refuses a name twice, an unknown CSV column and a declaration after run()", "[study]") {
+  FallingBody body(0.01);
+  const spar::test::ScratchFolder folder("study_refusals");
+  study::Recorder rec(*body.integrator, {.folder = folder.file(""), .name = "fall", .time_step = 0.01, .report = false});
+  rec.scalar({.name = "y", .file = false}, [&](const study::State& s) { return s.q.position[body.node].y(); });
+  CHECK_THROWS_WITH(rec.scalar({.name = "y", .file = false}, [] { return 0.0; }), Catch::Contains("declared twice"));
+  rec.csv({"y", "nothing"});
+  CHECK_THROWS_WITH(rec.run(0.05), Catch::Contains("'nothing' names no declared"));
+  CHECK_THROWS_WITH(study::Recorder(*body.integrator, {.folder = folder.file(""), .name = "fall"}),
+                    Catch::Contains("time step"));
+
+  study::Recorder after(*body.integrator, {.folder = folder.file(""), .name = "after", .time_step = 0.01,
+                                           .report = false});
+  after.run(0.02);
+  CHECK_THROWS_WITH(after.scalar({.name = "late", .file = false}, [] { return 0.0; }), Catch::Contains("after run()"));
+  after.close();
+}
