@@ -64,9 +64,8 @@ int main(int argc, char** argv) try {
   const int gebt_index = [&] {
     if (element == "gebt") {
       const int b = core::add_beam(
-          model,
-          {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), elements, 3),
-           .stiffness = core::SectionStiffness::from(aluminium, core::CrossSection::circle(2 * radius, poisson))});
+          model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), elements, 3),
+                  .stiffness = core::SectionStiffness::from(aluminium, core::CrossSection::circle(2 * radius, poisson))});
       root = core::beam(model, b).node(0);
       tip = core::beam(model, b).node(core::beam(model, b).control_point_count() - 1);
       return b;

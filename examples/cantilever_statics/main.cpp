@@ -60,18 +60,15 @@ Eigen::Vector2d elastica_tip(double load, double length) {
 
 int main(int argc, char** argv) try {
   // 1. Parse options.
-  study::CommandLine cli(argc, argv,
-                            "cantilever_statics: roll-up and large-deflection cantilever (issue 4)");
+  study::CommandLine cli(argc, argv, "cantilever_statics: roll-up and large-deflection cantilever (issue 4)");
   const std::string load_case = cli.text("--case", "rollup", "rollup | tip-load", {"rollup", "tip-load"});
-  const double load = cli.number("--load", 2 * std::numbers::pi,
-                                 "M L/EI (rollup) or P L^2/EI (tip-load)",
+  const double load = cli.number("--load", 2 * std::numbers::pi, "M L/EI (rollup) or P L^2/EI (tip-load)",
                                  study::Range::between(-100, 100));
   const int elements = cli.elements("--elements", 16, "number of NURBS elements", 1, examples::memory_use::cantilever_statics);
   const int degree = cli.integer("--degree", 3, "NURBS degree p (C^{p-1} continuity)", 1, iga::max_degree);
   const int load_steps = cli.integer("--steps", 10, "initial number of load steps", 1, 100000);
   const double length = cli.number("--length", 1.0, "beam length L [m]", study::Range::positive(1e3));
-  const double width = cli.number("--width", 0.01, "side of the square steel section [m]",
-                                    study::Range::positive(1));
+  const double width = cli.number("--width", 0.01, "side of the square steel section [m]", study::Range::positive(1));
   const std::string out = cli.output_folder("--out", "results/cantilever_statics", "output folder");
   if (!cli.finish()) return 0;
   study::require_slender_beam(length, "--length", width, "--width", width, "--width");  // before solving
@@ -137,13 +134,11 @@ int main(int argc, char** argv) try {
 
   // 7. The summary.
   output::JsonSummary()
-      .add("case", load_case).add("load", load).add("degree", degree).add("elements", elements)
-      .add("length", length).add("tip_x", tip_position.x()).add("tip_y", tip_position.y())
-      .add("tip_z", tip_position.z()).add("reference_tip_x", reference.x())
-      .add("reference_tip_y", reference.y()).add("relative_tip_error", error)
-      .add("load_steps", static_cast<int>(report.steps.size()))
-      .add("newton_iterations", report.newton_iterations).add("wall_s", report.wall_seconds)
-      .add("unstable_directions", report.unstable_directions)
+      .add("case", load_case).add("load", load).add("degree", degree).add("elements", elements).add("length", length)
+      .add("tip_x", tip_position.x()).add("tip_y", tip_position.y()).add("tip_z", tip_position.z())
+      .add("reference_tip_x", reference.x()).add("reference_tip_y", reference.y()).add("relative_tip_error", error)
+      .add("load_steps", static_cast<int>(report.steps.size())).add("newton_iterations", report.newton_iterations)
+      .add("wall_s", report.wall_seconds).add("unstable_directions", report.unstable_directions)
       .print();
   return 0;
 } catch (const std::exception& error) {

@@ -86,16 +86,12 @@ struct WeightStatistics {
 inline WeightStatistics weight_statistics(const std::vector<core::LengthControlEvent>& events) {
   std::vector<double> weights;
   for (const core::LengthControlEvent& e : events)
-    for (int j = 0; j < 3; ++j) weights.push_back(e.merged_weights(j));
-  WeightStatistics statistics;
-  statistics.count = weights.size();
-  if (weights.empty()) return statistics;
-  statistics.max = *std::max_element(weights.begin(), weights.end());
-  statistics.min = *std::min_element(weights.begin(), weights.end());
+    weights.insert(weights.end(), e.merged_weights.data(), e.merged_weights.data() + 3);  // k0, k1, k2
+  if (weights.empty()) return {};
   double sum = 0.0;
   for (double k : weights) sum += (k - 1) * (k - 1);
-  statistics.sigma = std::sqrt(sum / static_cast<double>(weights.size()));  // 000 eq. (42)
-  return statistics;
+  return {.count = weights.size(), .max = std::ranges::max(weights), .min = std::ranges::min(weights),
+          .sigma = std::sqrt(sum / static_cast<double>(weights.size()))};  // 000 eq. (42)
 }
 
 /// The event log: one row per event — time, split element, its weights before, the two merged
@@ -255,14 +251,11 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
   const double wall = rec.wall_seconds();
   output::JsonSummary summary;
   summary.add("elements", o.elements).add("element_kind", o.kind).add("h", o.h).add("rho_inf", o.rho_infinity)
-      .add("strategy", o.strategy).add("t_end", integrator.time())
-      .add("length_control_events", static_cast<int>(events.size()))
+      .add("strategy", o.strategy).add("t_end", integrator.time()).add("length_control_events", static_cast<int>(events.size()))
       .add("min_element_length_ratio", events.empty() ? 0.0 : min_ratio)
       .add("max_element_length_ratio", events.empty() ? 0.0 : max_ratio)
-      .add("max_energy_drift", max_deviation / max_kinetic)
-      .add("max_drift_between_events", max_segment_drift / max_kinetic)
-      .add("max_merge_energy_jump", max_jump / max_kinetic)
-      .add("weight_set_size", static_cast<int>(weights.count))
+      .add("max_energy_drift", max_deviation / max_kinetic).add("max_drift_between_events", max_segment_drift / max_kinetic)
+      .add("max_merge_energy_jump", max_jump / max_kinetic).add("weight_set_size", static_cast<int>(weights.count))
       .add("weight_max", weights.max).add("weight_min", weights.min).add("weight_sigma", weights.sigma);
   if (detachable)
     summary.add("separation_time", separation_time).add("support_reached_time", support_time);

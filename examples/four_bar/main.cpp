@@ -114,11 +114,11 @@ int main(int argc, char** argv) try {
   rec.newton_iterations({.description = "Newton iterations (linear solves) of the step (that holds the sample)"});
   rec.energy_balance();
   rec.vector({.name = "crank_tip", .unit = "m", .description = "B, the crank's tip node"},
-             [&](const study::State& s) { return s.q.position[mechanism.crank_tip]; });
+             study::node_position(mechanism.crank_tip));
   rec.vector({.name = "rocker_tip", .unit = "m", .description = "C, the rocker's tip node"},
-             [&](const study::State& s) { return s.q.position[mechanism.rocker_tip]; });
+             study::node_position(mechanism.rocker_tip));
   rec.vector({.name = "coupler_center", .unit = "m", .description = "the coupler's centre of mass"},
-             [&](const study::State& s) { return s.q.position[mechanism.coupler_node]; });
+             study::node_position(mechanism.coupler_node));
   //    A joint's reaction on its first body, in the joint's frame, from its multipliers (docs/joints.md §5).
   const auto at_a = [&](const study::State& s) { return pivot_a.reaction_in_frame(s.q, s.time, s.multipliers_of(0)); };
   rec.vector({.name = "pivot_a_force", .unit = "N",

@@ -58,8 +58,7 @@ int main(int argc, char** argv) try {
   //    body frame) and the ground's origin.
   solvers::ConstraintList joints;
   joints.push_back(std::make_unique<joints::SphericalJoint>(
-      joints::Attachment{body, -top.center_of_mass}, joints::Attachment{-1, Eigen::Vector3d::Zero()},
-      model.state()));
+      joints::Attachment{body, -top.center_of_mass}, joints::Attachment{-1, Eigen::Vector3d::Zero()}, model.state()));
 
   // 5. The integrator, started with the top's velocity.
   solvers::GeneralizedAlpha integrator(
@@ -90,8 +89,7 @@ int main(int argc, char** argv) try {
   const auto omega = [&](const study::State& s) -> Eigen::Vector3d {
     return s.velocity.segment<3>(s.q.blocks[body].offset + 3);
   };
-  rec.vector({.name = "position", .csv = "x,y,z", .file = false},
-             [&](const study::State& s) { return s.q.position[body]; });
+  rec.vector({.name = "position", .csv = "x,y,z", .file = false}, study::node_position(body));
   rec.vector({.name = "reference_center_of_mass", .unit = "m",
               .description = "the centre of mass of the RK4 reference, inertial frame", .csv = "x_ref,y_ref,z_ref"},
              [&] { return reference.center_of_mass(exact); });

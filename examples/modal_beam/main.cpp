@@ -64,10 +64,9 @@ int main(int argc, char** argv) try {
   const core::Material steel{.young_modulus = 210e9, .poisson_ratio = 0.3, .density = 7850};
   const core::CrossSection section = core::CrossSection::rectangle(width, height, steel.poisson_ratio);
   core::Model model;
-  const int b = core::add_beam(model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(),
-                                                                    Eigen::Vector3d(length, 0, 0), elements, 3),
-                                .stiffness = core::SectionStiffness::from(steel, section),
-                                .inertia = core::SectionInertia::from(steel, section)});
+  const int b = core::add_beam(
+      model, {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(length, 0, 0), elements, 3),
+              .stiffness = core::SectionStiffness::from(steel, section), .inertia = core::SectionInertia::from(steel, section)});
   const core::GeometricallyExactBeam& beam = core::beam(model, b);
   const core::Configuration& q = model.state();
   joints::SphericalJoint left(joints::Attachment{beam.node(0)}, joints::Attachment{-1}, q);
@@ -137,8 +136,7 @@ int main(int argc, char** argv) try {
   csv.close();
   shapes.close();
   output::JsonSummary()
-      .add("elements", elements).add("modes", static_cast<int>(f.size()))
-      .add("bending_modes_matched", matched)
+      .add("elements", elements).add("modes", static_cast<int>(f.size())).add("bending_modes_matched", matched)
       .add("max_relative_error", matched > 0 ? std::optional<double>(worst) : std::nullopt)
       .add("first_frequency_hz", f.size() > 1 ? std::optional<double>(f(1)) : std::nullopt)
       .print();

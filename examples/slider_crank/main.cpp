@@ -110,7 +110,7 @@ int main(int argc, char** argv) try {
               .csv = "rod2_mid_x,rod2_mid_y,rod2_mid_z"},
              [&](const study::State& s) { return rod2_rate.midpoint(s.q); });
   rec.vector({.name = "rod1_tip", .unit = "m", .description = "Rod I's tip (its last node), inertial frame"},
-             [&](const study::State& s) { return s.q.position[crank_tip]; });
+             study::node_position(crank_tip));
   const study::Scalar residual = rec.constraint_residual(
       {.description = "largest constraint violation |Phi|_inf after the step (position rows in m; the slider's "
                       "rotation-lock rows are dot products, about rad)",

@@ -87,9 +87,9 @@ int main(int argc, char** argv) try {
              [&](const study::State& s) { return s.q.values(s.q.blocks[zeta_block].offset); });
   rec.scalar({.name = "zeta_rate", .unit = "m/s", .description = "d zeta / dt"},
              [&](const study::State& s) { return s.velocity(s.q.blocks[zeta_block].offset); });
-  const study::Vector mass_position =
-      rec.vector({.name = "mass", .unit = "m", .description = "the tip mass M, inertial frame", .csv = "mass_x,mass_y,mass_z"},
-                 [&](const study::State& s) { return s.q.position[mass]; });
+  const study::Vector mass_position = rec.vector(
+      {.name = "mass", .unit = "m", .description = "the tip mass M, inertial frame", .csv = "mass_x,mass_y,mass_z"},
+      study::node_position(mass));
   rec.vector({.name = "slider", .unit = "m", .description = "the sliding point on the carrier, inertial frame",
               .csv = "slider_x,slider_y,slider_z"},
              [&](const study::State& s) { return sliding.position_at(s.q, 0.0); });

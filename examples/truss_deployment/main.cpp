@@ -122,9 +122,9 @@ int main(int argc, char** argv) try {
                });
   }
   rec.energy_balance();
-  const study::Vector d = rec.vector({.name = "D", .unit = "m", .description = "point D, the upper corner Y = 0 of frame 2",
-                                      .csv = "d_x,d_y,d_z"},
-                                     [&](const study::State& s) { return s.q.position[unit.d_node]; });
+  const study::Vector d = rec.vector(
+      {.name = "D", .unit = "m", .description = "point D, the upper corner Y = 0 of frame 2", .csv = "d_x,d_y,d_z"},
+      study::node_position(unit.d_node));
   rec.csv({"D", "zeta_0", "zeta_1", "zeta_2", "zeta_3", "beta_0", "beta_1", "beta_2", "beta_3", "kinetic_energy",
            "strain_energy", "external_work", "numerical_dissipation", "constraint_residual", "newton_iterations"},
           study::Schedule::every_step());

@@ -43,6 +43,12 @@ private:
   mutable std::optional<solvers::Energies> energies_;
 };
 
+/// The position of frame block `node`, as a function of the recorded state:
+/// `rec.vector({.name = "tip", ...}, study::node_position(tip))`.
+inline auto node_position(int node) {
+  return [node](const State& s) -> Eigen::Vector3d { return s.q.position[node]; };
+}
+
 /// A value a study records: a scalar (Recorder::scalar) or a 3-vector (Recorder::vector).
 struct Quantity {
   /// Its name: the results file's dataset (scalars/<name> or probes/<name>) and the name the CSV
