@@ -124,6 +124,7 @@ int main(int argc, char** argv) try {
     results.write_attribute("remedy", remedy);
   }
   results.write_attribute("poisson_ratio", poisson);
+  results.write_options(cli.options());
   results.append({.time = 1.0, .scalars = {deflection}, .probes = {tip_position}, .centerlines = {centerline}});
   results.close();
 

@@ -124,6 +124,7 @@ int main(int argc, char** argv) try {
   output::Hdf5File h5(out + "/cantilever_statics.h5");
   h5.write_attribute("case", load_case);
   h5.write_attribute("load", load);
+  h5.write_options(cli.options());
   h5.write("centerline/deformed", centerline, "m",
            "deformed centerline at 10 points per element + 1, equally spaced in the knot parameter");
   h5.write("centerline/reference", undeformed, "m", "the same parameters on the reference (straight) centerline");

@@ -7,6 +7,7 @@
 #include <spar/core/model.hpp>
 #include <spar/elements/rigid_body/rigid_body.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
+#include <spar/study/command_line.hpp>
 #include <spar/study/recorder.hpp>
 
 #include <catch2/catch.hpp>
@@ -166,4 +167,25 @@ TEST_CASE("the recorder refuses a name twice, an unknown CSV column and a declar
   after.run(0.02);
   CHECK_THROWS_WITH(after.scalar({.name = "late", .file = false}, [] { return 0.0; }), Catch::Contains("after run()"));
   after.close();
+}
+
+TEST_CASE("the recorder's results file holds the options of the command line the program finished", "[study]") {
+  const spar::test::ScratchFolder folder("study_options");
+  std::vector<std::string> args = {"driver", "--h", "0.02", "--out", folder.file("")};
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  study::CommandLine cli(static_cast<int>(argv.size()), argv.data(), "driver");
+  const double h = cli.number("--h", 0.01, "time step [s]", study::Range::positive());
+  cli.number("--t-end", 0.04, "end time [s]", study::Range::positive());
+  const std::string out = cli.output_folder("--out", "results/driver", "output folder");
+  REQUIRE(cli.finish());
+  CHECK(study::finished_options() == cli.options());
+  FallingBody body(h);
+  study::Recorder rec(*body.integrator, {.folder = out, .name = "fall", .time_step = h, .report = false});
+  rec.run(0.04);
+  rec.close();
+  const spar::test::ReadOnlyFile file(folder.file("fall.h5"));
+  CHECK(file.string_attribute_of("/options", "--h").value == "0.02");        // as given
+  CHECK(file.string_attribute_of("/options", "--t-end").value == "0.04");    // its default
+  CHECK(file.string_attribute_of("/options", "--out").value == out);
 }

@@ -13,6 +13,12 @@ namespace spar::study {
 
 namespace {
 
+/// finished_options(): the program's command line, once accepted.
+output::RunOptions& last_finished_options() {
+  static output::RunOptions options;
+  return options;
+}
+
 /// A default outside its own range is the driver's mistake, caught the first time it runs.
 void check_default(const std::string& name, double fallback, const Range& range) {
   if (!std::isnan(fallback) && (std::isinf(fallback) || range.contains(fallback))) return;
@@ -130,8 +136,11 @@ bool CommandLine::finish() {
   }
   for (const Condition& condition : conditions_) check(condition);
   for (const auto& [name, folder] : folders_) prepare_folder(name, folder);
+  last_finished_options() = values_;
   return true;
 }
+
+const output::RunOptions& finished_options() { return last_finished_options(); }
 
 std::string CommandLine::Condition::values_text() const {
   std::string text;

@@ -1,6 +1,7 @@
 #include "recorder_impl.hpp"
 
 #include <spar/error.hpp>
+#include <spar/study/command_line.hpp>
 
 #include <sstream>
 #include <type_traits>
@@ -90,6 +91,7 @@ void Recorder::Impl::open() {
   if (!csv_names.empty()) header = resolve_csv();  // refuses a bad column before any file is made
   writer.emplace(options.folder + "/" + options.name + ".h5", std::move(layout), options.flush_every);
   writer->write_attribute("time_step", options.time_step);
+  if (!finished_options().empty()) writer->write_options(finished_options());
   for (const Attribute& attribute : pending_attributes) write(attribute);
   pending_attributes.clear();
   if (!csv_names.empty()) csv.emplace(options.folder + "/" + options.name + ".csv", header, options.csv_digits);

@@ -12,6 +12,7 @@
 ///     const std::string out = cli.output_folder("--out", "results/my_study", "output folder");
 ///     if (!cli.finish()) return 0;  // --help was given
 
+#include <spar/output/provenance.hpp>
 #include <spar/study/run_limits.hpp>
 
 #include <exception>
@@ -51,7 +52,11 @@ public:
   void applies_only_when(const std::string& name, const std::string& other, const std::vector<std::string>& values);
   /// Call after reading every option: prints the help and returns false for --help; throws for
   /// options that were given but never read and for output folders that cannot be written.
+  /// Accepted, the options become the program's finished_options().
   bool finish();
+  /// Every option read so far, name → its value as given or its default: the run's options
+  /// (output::ResultsWriter::write_options, output::Hdf5File::write_options).
+  const output::RunOptions& options() const { return values_; }
 
 private:
   /// `name` applies only when `other` is one of `values` (applies_only_when).
@@ -74,10 +79,14 @@ private:
   std::map<std::string, std::string> given_;
   std::vector<std::string> used_;
   std::vector<std::pair<std::string, std::string>> folders_;
-  std::map<std::string, std::string> values_;  ///< every option read: its value as given, or its default
+  output::RunOptions values_;  ///< every option read: its value as given, or its default
   std::vector<Condition> conditions_;
   std::vector<std::pair<std::string, std::string>> options_;  ///< name and --help line, in reading order
 };
+
+/// The options of the command line whose finish() last accepted them (empty before): what every
+/// study::Recorder writes to its results file's /options (docs/output.md, "Schema and provenance").
+const output::RunOptions& finished_options();
 
 /// What a driver's main returns when its run stops on an error: prints error.what() (for a
 /// spar::Error: what, where and how to fix it) on stderr and returns 1.

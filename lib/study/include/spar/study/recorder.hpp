@@ -198,7 +198,8 @@ public:
   void constant(const std::string& name, const Eigen::MatrixXd& data, const std::string& unit,
                 const std::string& description);
 
-  /// Makes the files, records the start, then steps until t_end − h/2 or until hooks.stop_when,
+  /// Makes the files (with the program's finished_options() as the results file's /options),
+  /// records the start, then steps until t_end − h/2 or until hooks.stop_when,
   /// recording each step as scheduled. Call integrator.initialize() first.
   void run(double t_end, const RunHooks& hooks = {});
   /// Writes the counters (t_end, steps, newton_iterations, factorizations,
