@@ -30,14 +30,14 @@ inline SlidingBeam build_sliding_beam(int carrier_elements, int sliding_elements
   const core::SectionInertia inertia = core::SectionInertia::from(material, section);
   SlidingBeam s;
   core::Model& model = s.model;
-  s.carrier = model.add_beam({.centerline = iga::straight_line<3>(A, B, carrier_elements, degree),
+  s.carrier = core::add_beam(model, {.centerline = iga::straight_line<3>(A, B, carrier_elements, degree),
                               .stiffness = stiffness, .inertia = inertia,
                               .section_axis_hint = Eigen::Vector3d::UnitX()});
-  s.sliding = model.add_beam({.centerline = iga::straight_line<3>(A, M, sliding_elements, degree),
+  s.sliding = core::add_beam(model, {.centerline = iga::straight_line<3>(A, M, sliding_elements, degree),
                               .stiffness = stiffness, .inertia = inertia});
-  const core::GeometricallyExactBeam& carrier = model.beam(s.carrier);
-  const core::GeometricallyExactBeam& sliding = model.beam(s.sliding);
-  s.mass_node = model.rigid_body(model.add_rigid_body(
+  const core::GeometricallyExactBeam& carrier = core::beam(model, s.carrier);
+  const core::GeometricallyExactBeam& sliding = core::beam(model, s.sliding);
+  s.mass_node = core::rigid_body(model, core::add_rigid_body(model, 
       {.center_of_mass = M, .mass = 1.0, .inertia = 4e-5 * Eigen::Matrix3d::Identity()})).node;
   model.set_gravity(Eigen::Vector3d(0, 0, -9.81));
 

@@ -135,14 +135,14 @@ inline TrussUnit build_truss_unit(const TrussParameters& parameters) {
                               const Eigen::Vector3d& to) {
     const Eigen::Vector3d t = (to - from).normalized(), across = t.cross(Eigen::Vector3d::UnitY());
     const Eigen::Vector3d hint = across.norm() > 0.1 ? across : Eigen::Vector3d::UnitZ();
-    const int beam = model.add_beam({.centerline = iga::straight_line<3>(from, to, p.elements, p.degree),
+    const int beam = core::add_beam(model, {.centerline = iga::straight_line<3>(from, to, p.elements, p.degree),
                                      .stiffness = stiffness, .inertia = inertia, .section_axis_hint = hint});
     unit.members.push_back({kind, std::move(name), beam});
     return beam;
   };
-  const auto first_node = [&](int beam) { return model.beam(beam).node(0); };
+  const auto first_node = [&](int beam) { return core::beam(model, beam).node(0); };
   const auto last_node = [&](int beam) {
-    const core::GeometricallyExactBeam& b = model.beam(beam);
+    const core::GeometricallyExactBeam& b = core::beam(model, beam);
     return b.node(b.control_point_count() - 1);
   };
   const Eigen::Vector3d Y = Eigen::Vector3d::UnitY();
@@ -170,7 +170,7 @@ inline TrussUnit build_truss_unit(const TrussParameters& parameters) {
   const core::Configuration& q0 = model.state();
   //    Frame 0 is fixed; the others are clamped rigid at their corners.
   for (int rod = 0; rod < 4; ++rod) {  // the four rods of frame 0 come first
-    const core::GeometricallyExactBeam& b = model.beam(unit.members[rod].beam);
+    const core::GeometricallyExactBeam& b = core::beam(model, unit.members[rod].beam);
     for (int i = 0; i < b.control_point_count(); ++i) model.fix(b.node(i));
   }
   const auto hinge = [&](int bar_node, int frame_node) {
