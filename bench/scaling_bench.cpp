@@ -32,7 +32,7 @@ struct Cantilever {
   explicit Cantilever(int elements) {
     const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
     const core::CrossSection section = core::CrossSection::rectangle(0.03, 0.001, steel.poisson_ratio);
-    beam = core::add_beam(model, 
+    beam = core::add_beam(model,
         {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), elements, 3),
          .stiffness = core::SectionStiffness::from(steel, section),
          .inertia = core::SectionInertia::from(steel, section)});

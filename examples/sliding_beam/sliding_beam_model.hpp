@@ -37,7 +37,7 @@ inline SlidingBeam build_sliding_beam(int carrier_elements, int sliding_elements
                               .stiffness = stiffness, .inertia = inertia});
   const core::GeometricallyExactBeam& carrier = core::beam(model, s.carrier);
   const core::GeometricallyExactBeam& sliding = core::beam(model, s.sliding);
-  s.mass_node = core::rigid_body(model, core::add_rigid_body(model, 
+  s.mass_node = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = M, .mass = 1.0, .inertia = 4e-5 * Eigen::Matrix3d::Identity()})).node;
   model.set_gravity(Eigen::Vector3d(0, 0, -9.81));
 

@@ -32,7 +32,7 @@ struct TopRun {
 /// The classic top with gravity, on a spherical joint at its tip (the origin): its body's node.
 int add_top(core::Model& model, solvers::ConstraintList& joints) {
   const top::TopParameters p = top::classic_top();
-  const int body = core::rigid_body(model, core::add_rigid_body(model, 
+  const int body = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = p.center_of_mass, .mass = p.mass, .inertia = p.inertia})).node;
   model.set_gravity(p.gravity);
   joints.push_back(std::make_unique<joints::SphericalJoint>(

@@ -29,7 +29,7 @@ struct Pendulum {
 /// the body about Z at that rate (rad/s) from its angle at t = 0.
 Pendulum pendulum(double drive_rate = 0.0) {
   Pendulum p;
-  p.body = core::rigid_body(p.model, core::add_rigid_body(p.model, 
+  p.body = core::rigid_body(p.model, core::add_rigid_body(p.model,
       {.center_of_mass = Eigen::Vector3d(arm, 0, 0), .mass = mass,
        .inertia = Eigen::Vector3d(0.04, 0.03, inertia_z).asDiagonal()})).node;
   p.model.set_gravity(Eigen::Vector3d(0, -9.81, 0));

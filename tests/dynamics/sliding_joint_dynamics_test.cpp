@@ -52,12 +52,12 @@ const Eigen::Vector3d rail_direction(std::cos(incline), 0.0, -std::sin(incline))
 
 /// A bead (rigid body of 0.5 kg at the rail point ζ₀) on the rail, gravity along −Z.
 void build_bead_on_rail(SlidingRun& run, double zeta0, std::optional<double> upper_stop, double h) {
-  const int carrier = core::add_beam(run.model, 
+  const int carrier = core::add_beam(run.model,
       {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), rail_length * rail_direction, 4, 2),
        .stiffness = test::generic_stiffness()});
   for (int I = 0; I < core::beam(run.model, carrier).control_point_count(); ++I)
     run.model.fix(core::beam(run.model, carrier).node(I));
-  run.bead = core::rigid_body(run.model, core::add_rigid_body(run.model, 
+  run.bead = core::rigid_body(run.model, core::add_rigid_body(run.model,
       {.center_of_mass = zeta0 * rail_direction, .mass = bead_mass,
        .inertia = 1e-3 * Eigen::Matrix3d::Identity()})).node;
   run.model.set_gravity(Eigen::Vector3d(0, 0, -g));
@@ -196,7 +196,7 @@ void build_free_slide(FreeSlide& f, int continuity, double h, double rho) {
   run.model.fix(core::beam(run.model, carrier).node(0));
   const double zeta0 = 0.2;
   const Eigen::Vector3d start(std::cos(zeta0), std::sin(zeta0), 0.0);
-  run.bead = core::rigid_body(run.model, core::add_rigid_body(run.model, 
+  run.bead = core::rigid_body(run.model, core::add_rigid_body(run.model,
       {.center_of_mass = start, .mass = 0.1, .inertia = 1e-4 * Eigen::Matrix3d::Identity()})).node;
   auto joint = std::make_unique<joints::SlidingJoint>(
       joints::SlidingJointParameters{.slider = {.node = run.bead}, .carrier = core::beam_centerline(run.model, carrier), .zeta = zeta0, .name = "mass"},

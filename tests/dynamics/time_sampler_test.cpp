@@ -33,7 +33,7 @@ TEST_CASE("time sampler: every 1 ms from h = 3e-4 s, exact for a falling body sp
   // cubic Hermite interpolation is exact for them: round-off of ~170 steps, bound 1e-12.
   core::Model model;
   const Eigen::Vector3d x0(0.1, 0.2, 0.3), v0(1.0, 2.0, 0.5), omega(0, 0, 20.0), g(0, -9.81, 0);
-  const int body = core::rigid_body(model, core::add_rigid_body(model, 
+  const int body = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = x0, .mass = 1.0, .inertia = Eigen::Vector3d(0.02, 0.02, 0.03).asDiagonal()})).node;
   model.set_gravity(g);
   solvers::GeneralizedAlpha integrator(model, {}, {.time_step = 3e-4, .tolerance = 1e-24});
@@ -66,7 +66,7 @@ namespace {
 /// sampled at the given times.
 SampledRun pendulum(double h, std::vector<double> times, double t_end) {
   core::Model model;
-  const int body = core::rigid_body(model, core::add_rigid_body(model, 
+  const int body = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = Eigen::Vector3d(0.5, 0, 0), .mass = 1.0,
        .inertia = Eigen::Vector3d(0.01, 0.01, 0.02).asDiagonal()})).node;
   model.set_gravity(Eigen::Vector3d(0, -9.81, 0));

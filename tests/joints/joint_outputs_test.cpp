@@ -33,7 +33,7 @@ struct Hinged {
 /// The body hinged at the origin; `body_first`: the body is the joint's a (else the ground is).
 Hinged hinged(const Eigen::Vector3d& gravity, bool body_first, double drive_rate = 0.0) {
   Hinged h;
-  h.body = core::rigid_body(h.model, core::add_rigid_body(h.model, 
+  h.body = core::rigid_body(h.model, core::add_rigid_body(h.model,
       {.center_of_mass = Eigen::Vector3d(arm, 0, 0), .mass = mass,
        .inertia = Eigen::Vector3d(0.04, 0.03, inertia_z).asDiagonal()})).node;
   h.model.set_gravity(gravity);

@@ -173,7 +173,7 @@ TEST_CASE("dynamics: moments change a free body's angular momentum by their angu
   const Eigen::Vector3d M(0.5, -0.2, 1.0);
   for (core::MomentFrame frame : {core::MomentFrame::material, core::MomentFrame::inertial}) {
     core::Model model;
-    const int node = core::rigid_body(model, core::add_rigid_body(model, 
+    const int node = core::rigid_body(model, core::add_rigid_body(model,
         {.mass = 1.0, .inertia = Eigen::Vector3d(1, 2, 3).asDiagonal()})).node;
     core::add_load(model, core::NodalMoment{node, M, frame});
     const double h = 1e-3;

@@ -49,7 +49,7 @@ TEST_CASE("energy balance: a constant force on a free rigid body does work equal
   // generalized-α keeps only to O(h²): ΔKE = external_work to (|Ω| h)²/12 of the rotational
   // energy, 1e-7 J at h = 1e-3 (measured 4.1e-9 J); so is numerical_dissipation.
   core::Model model;
-  const int node = core::rigid_body(model, core::add_rigid_body(model, 
+  const int node = core::rigid_body(model, core::add_rigid_body(model,
       {.mass = 2.0, .inertia = Eigen::Vector3d(1, 2, 3).asDiagonal()})).node;
   const Eigen::Vector3d F(3.0, -1.0, 2.0), Omega(0.3, 1.0, 0.2);
   core::add_load(model, core::NodalForce{node, F});

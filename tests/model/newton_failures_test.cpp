@@ -164,7 +164,7 @@ struct Spinner {
   core::Model model;
   int node = 0;
   Spinner() {
-    node = core::rigid_body(model, core::add_rigid_body(model, 
+    node = core::rigid_body(model, core::add_rigid_body(model,
         {.mass = 2.0, .inertia = Eigen::Vector3d(0.04, 0.03, 0.05).asDiagonal()})).node;
   }
 };

@@ -51,7 +51,7 @@ struct Pendulum {
   core::Model model;
   solvers::ConstraintList joints;
   Pendulum(const Eigen::Vector3d& offset, int hinges = 1) {
-    const int body = core::rigid_body(model, core::add_rigid_body(model, 
+    const int body = core::rigid_body(model, core::add_rigid_body(model,
         {.center_of_mass = Eigen::Vector3d(0.5, 0, 0), .mass = 2.0,
          .inertia = Eigen::Vector3d(0.04, 0.03, 0.05).asDiagonal()})).node;
     for (int i = 0; i < hinges; ++i)

@@ -104,11 +104,11 @@ MultiplierErrors run(double h, double t_from, double t_end, bool perturbed_start
         .asDiagonal()
         .toDenseMatrix();
   };
-  const int crank = core::rigid_body(model, core::add_rigid_body(model, 
+  const int crank = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = Eigen::Vector3d(L1 / 2, 0, 0), .mass = m1, .inertia = rod(m1, L1)})).node;
-  const int coupler = core::rigid_body(model, core::add_rigid_body(model, 
+  const int coupler = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = Eigen::Vector3d(L1 + L2 / 2, 0, 0), .mass = m2, .inertia = rod(m2, L2)})).node;
-  const int slider = core::rigid_body(model, core::add_rigid_body(model, 
+  const int slider = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = Eigen::Vector3d(L1 + L2, 0, 0), .mass = m3,
        .inertia = Eigen::Matrix3d::Identity() * m3 * 0.02 * 0.02 / 6})).node;
   model.set_gravity(Eigen::Vector3d(0, -g, 0));

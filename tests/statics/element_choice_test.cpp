@@ -81,7 +81,7 @@ Errors deflection_errors(double slenderness, Discretization d, int elements, Loa
                                  : F * (x * x * (3.0 * L - x) / (6.0 * C.bending_3) + x / C.shear_2);
   };
   core::Model model;
-  const int beam = core::add_beam(model, 
+  const int beam = core::add_beam(model,
       {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(L, 0, 0), elements, d.degree),
        .stiffness = C,
        .quadrature_points = d.quadrature_points});

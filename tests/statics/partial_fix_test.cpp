@@ -44,7 +44,7 @@ TEST_CASE("Fix::rotations and Fix::translations: guided and pinned ends against 
   SECTION("pinned root (Fix::translations), guided tip: F L^3/(3 EI) + F L/(GA), root turned F L^2/(2 EI)") {
     // M(s) = −F s from the root, where no moment acts; the tip's reaction moment keeps it level.
     core::Model model;
-    const int b = core::add_beam(model, 
+    const int b = core::add_beam(model,
         {.centerline = test::straight_centerline(L, 4, 3), .stiffness = test::cantilever_stiffness()});
     const int root = core::beam(model, b).node(0), tip = core::beam(model, b).node(core::beam(model, b).control_point_count() - 1);
     model.fix(root, core::Fix::translations);

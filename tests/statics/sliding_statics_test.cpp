@@ -40,7 +40,7 @@ TEST_CASE("sliding joint in statics: a weight on a clamped circular carrier sett
   const double u0 = 0.4;  // the arc's parameter is symmetric about its middle, u = 0.5 (ζ = L₀/2)
   REQUIRE(iga::circular_arc(arc).knots().basis_count() == 7);  // three pieces
   const Eigen::Vector3d start = beam.position_at(model.state(), u0);
-  const int weight = core::rigid_body(model, core::add_rigid_body(model, 
+  const int weight = core::rigid_body(model, core::add_rigid_body(model,
       {.center_of_mass = start, .mass = 1.0, .inertia = 1e-4 * Eigen::Matrix3d::Identity()})).node;
   model.fix(weight, core::Fix::rotations);
   model.set_gravity(Eigen::Vector3d(0, 0, -9.81));

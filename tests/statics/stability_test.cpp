@@ -62,7 +62,7 @@ TEST_CASE("the stability of a state under a moment load is not assessed", "[stat
   // energy criterion does not apply, though the tangent of the roll-up is symmetric.
   const core::Material steel{.young_modulus = 2.1e11, .poisson_ratio = 0.3, .density = 7850};
   core::Model model;
-  const int b = core::add_beam(model, 
+  const int b = core::add_beam(model,
       {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 0, 0), 8, 3),
        .stiffness = core::SectionStiffness::from(steel, core::CrossSection::rectangle(0.01, 0.01, 0.3))});
   const core::GeometricallyExactBeam& beam = core::beam(model, b);

@@ -14,7 +14,7 @@ int main() {
   const int elements = 8, degree = 3;
 
   core::Model model;
-  const int b = core::add_beam(model, 
+  const int b = core::add_beam(model,
       {.centerline = iga::straight_line<3>(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 0, 0), elements, degree),
        .stiffness = core::SectionStiffness::from(steel, square)});
   const core::GeometricallyExactBeam& beam = core::beam(model, b);
