@@ -76,8 +76,8 @@ EnergyBalance Recorder::energy_balance() {
                  "trapezoidal along the increments; numerical_dissipation is what remains besides it",
                  &solvers::Energies::physical_dissipation),
           energy("numerical_dissipation",
-                 "energy removed by the integrator since t = 0: external_work - (E - E(0)), E = kinetic + strain + "
-                 "gravity",
+                 "energy removed by the integrator since t = 0: external_work - (E - E(0)) - physical_dissipation, "
+                 "E = kinetic + strain + gravity",
                  &solvers::Energies::numerical_dissipation)};
 }
 
