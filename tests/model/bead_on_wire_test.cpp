@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "upward_crossings.hpp"
+
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -90,7 +92,7 @@ WireRun release_bead(double h, double periods) {
   WireRun run;
   const double exact_period = 4 * std::sqrt(radius / gravity) * complete_elliptic_k(std::sin(release_angle / 2));
   const int steps = static_cast<int>(std::lround(periods * exact_period / h)) + 1;
-  std::vector<double> crossings;
+  test::UpwardCrossings crossings;
   const int s_dof = integrator.configuration().blocks[arc].offset;
   double s_prev = s0, v_prev = 0.0;
   for (int n = 0; n < steps; ++n) {
@@ -99,25 +101,12 @@ WireRun release_bead(double h, double periods) {
     const double s = integrator.configuration().values(s_dof), v = integrator.velocity()(s_dof);
     run.energy_error = std::max(run.energy_error, std::abs(integrator.energies().total() - energy0));
     run.constraint = std::max(run.constraint, integrator.constraint_residual());
-    if (s_prev < 0.0 && s >= 0.0) {
-      // The crossing time by the cubic Hermite interpolant of (s, ṡ) over the step (O(h⁴)), by
-      // Newton from the linear guess.
-      double tau = -s_prev / (s - s_prev);
-      for (int i = 0; i < 20; ++i) {
-        const double t2 = tau * tau, t3 = t2 * tau;
-        const double p = (2 * t3 - 3 * t2 + 1) * s_prev + (t3 - 2 * t2 + tau) * h * v_prev +
-                         (-2 * t3 + 3 * t2) * s + (t3 - t2) * h * v;
-        const double dp = (6 * t2 - 6 * tau) * s_prev + (3 * t2 - 4 * tau + 1) * h * v_prev +
-                          (-6 * t2 + 6 * tau) * s + (3 * t2 - 2 * tau) * h * v;
-        tau -= p / dp;
-      }
-      crossings.push_back(t_prev + tau * h);
-    }
+    crossings.add_step(t_prev, h, s_prev, v_prev, s, v);
     s_prev = s;
     v_prev = v;
   }
-  REQUIRE(crossings.size() >= 2);
-  run.period = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  REQUIRE(crossings.count() >= 2);
+  run.period = crossings.period();
   run.dissipation = integrator.energies().numerical_dissipation;
   return run;
 }

@@ -15,6 +15,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "upward_crossings.hpp"
+
 #include <cmath>
 #include <complex>
 #include <memory>
@@ -117,32 +119,19 @@ RailRun release_bead(double angle, double h, double periods) {
   integrator.initialize();
   const int offset = model.state().blocks[bead].offset;
   const int steps = static_cast<int>(std::lround(periods * 2 * std::numbers::pi * std::sqrt(radius / gravity) / h)) + 1;
-  std::vector<double> crossings;
+  test::UpwardCrossings crossings;
   double x_prev = x0.x(), v_prev = 0.0;
   for (int n = 0; n < steps; ++n) {
     const double t_prev = integrator.time();
     integrator.step();
     const double x = integrator.configuration().position[bead].x(), v = integrator.velocity()(offset);
     run.constraint = std::max(run.constraint, integrator.constraint_residual());
-    if (x_prev < 0.0 && x >= 0.0) {
-      // The crossing by the cubic Hermite interpolant of (x, ẋ) over the step (O(h⁴)), by Newton
-      // from the linear guess.
-      double tau = -x_prev / (x - x_prev);
-      for (int i = 0; i < 20; ++i) {
-        const double t2 = tau * tau, t3 = t2 * tau;
-        const double p = (2 * t3 - 3 * t2 + 1) * x_prev + (t3 - 2 * t2 + tau) * h * v_prev +
-                         (-2 * t3 + 3 * t2) * x + (t3 - t2) * h * v;
-        const double dp = (6 * t2 - 6 * tau) * x_prev + (3 * t2 - 4 * tau + 1) * h * v_prev +
-                          (-6 * t2 + 6 * tau) * x + (3 * t2 - 2 * tau) * h * v;
-        tau -= p / dp;
-      }
-      crossings.push_back(t_prev + tau * h);
-    }
+    crossings.add_step(t_prev, h, x_prev, v_prev, x, v);
     x_prev = x;
     v_prev = v;
   }
-  REQUIRE(crossings.size() >= 2);
-  run.period = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  REQUIRE(crossings.count() >= 2);
+  run.period = crossings.period();
   return run;
 }
 
