@@ -94,9 +94,10 @@ void GeneralizedAlpha::Implementation::perturb_starting_values() {
   const double h = options.time_step;
   Snapshot initial;
   save(initial);
-  // The step books its work against the forces at its start, which initialize() sets only
-  // afterwards; the auxiliary step's work is discarded with it.
+  // The step books its work and dissipation against the forces at its start, which initialize()
+  // sets only afterwards; the auxiliary step's booking is discarded with it.
   balance.last_work_force = Eigen::VectorXd::Zero(assembly.dof_count());
+  balance.last_dissipative_force = Eigen::VectorXd::Zero(assembly.dof_count());
   if (!try_step(h, Predictor::extrapolated) && !try_step(h, Predictor::velocity_only))
     throw Error("the auxiliary step of the perturbed starting values did not converge at t = " +
                     significant(state.time) + " (h = " + significant(h) + "): " + last_failure,
