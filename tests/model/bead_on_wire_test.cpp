@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "elliptic_integral.hpp"
 #include "upward_crossings.hpp"
 
 #include <cmath>
@@ -41,21 +42,7 @@ TEST_CASE("a joint that owns its coordinate: Jacobian, multiplier tangent, accel
 
 namespace {
 
-/// The arithmetic–geometric mean of a and b (quadratic convergence: 6 iterations reach round-off
-/// for b/a ≥ 0.1).
-double arithmetic_geometric_mean(double a, double b) {
-  for (int i = 0; i < 20 && std::abs(a - b) > 1e-16 * a; ++i) {
-    const double next = 0.5 * (a + b);
-    b = std::sqrt(a * b);
-    a = next;
-  }
-  return 0.5 * (a + b);
-}
-
-/// The complete elliptic integral of the first kind K(k) = π / (2 AGM(1, sqrt(1 − k²))).
-double complete_elliptic_k(double k) {
-  return std::numbers::pi / (2 * arithmetic_geometric_mean(1.0, std::sqrt(1 - k * k)));
-}
+using test::complete_elliptic_k;
 
 constexpr double bead_mass = 0.7, radius = 1.0, gravity = 9.81;
 const double release_angle = std::numbers::pi / 3;

@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "elliptic_integral.hpp"
 #include "upward_crossings.hpp"
 
 #include <cmath>
@@ -27,21 +28,7 @@ using namespace spar;
 
 namespace {
 
-/// The arithmetic–geometric mean of a and b (quadratic convergence: 6 iterations reach round-off
-/// for b/a ≥ 0.1).
-double arithmetic_geometric_mean(double a, double b) {
-  for (int i = 0; i < 20 && std::abs(a - b) > 1e-16 * a; ++i) {
-    const double next = 0.5 * (a + b);
-    b = std::sqrt(a * b);
-    a = next;
-  }
-  return 0.5 * (a + b);
-}
-
-/// The complete elliptic integral of the first kind K(k) = π / (2 AGM(1, √(1 − k²))).
-double complete_elliptic_k(double k) {
-  return std::numbers::pi / (2 * arithmetic_geometric_mean(1.0, std::sqrt(1 - k * k)));
-}
+using test::complete_elliptic_k;
 
 constexpr double radius = 1.0, gravity = 9.81, bead_mass = 0.7;
 
