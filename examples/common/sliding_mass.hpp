@@ -10,8 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,23 +21,8 @@ struct SlidingMassOptions {
   std::string out;      ///< the output folder
   std::string kind;     ///< ale-rancf | ale-ancf
   int elements = 0;
-  double h = 0.0, t_end = 0.0, rho_infinity = 1.0;
-  std::string strategy;  ///< the iteration matrix: update | frozen | modified
-
-  /// The integrator's options: Newton's increment at 1e-16, the residual at 1e-9 of its terms.
-  solvers::DynamicOptions dynamics() const {
-    return {.time_step = h, .spectral_radius = rho_infinity,
-            .iteration_matrix = solvers::iteration_matrix_from_string(strategy), .tolerance = 1e-16,
-            .residual_tolerance = 1e-9};
-  }
+  study::Integration run;  ///< h, t_end, ρ∞, the iteration matrix; Newton's increment at 1e-16, the residual at 1e-9
 };
-
-/// The section of a circular rod of `radius` (m): EA, EI and ρA (000 §6: E = 20 or 200 MPa, ρ = 7200 kg/m³).
-inline core::RancfSection circular_section(double radius, double young_modulus, double density) {
-  const double area = std::numbers::pi * radius * radius, inertia = area * radius * radius / 4;
-  return {.axial_stiffness = young_modulus * area, .bending_stiffness = young_modulus * inertia,
-          .mass_per_length = density * area};
-}
 
 /// An example's defaults.
 struct SlidingMassDefaults {
@@ -55,63 +38,16 @@ inline SlidingMassOptions sliding_mass_options(study::CommandLine& cli, const Sl
   SlidingMassOptions o{.example = defaults.example};
   o.kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf", {"ale-rancf", "ale-ancf"});
   o.elements = cli.elements("--elements", defaults.elements, "elements", 3, defaults.memory);
-  o.h = cli.number("--h", 1e-3, "time step [s]", study::Range::positive());
-  o.t_end = cli.number("--t-end", defaults.t_end, "end time [s]", study::Range::positive());
-  o.rho_infinity = cli.number("--rho-inf", 1.0, "spectral radius at infinity (1: no dissipation)", study::Range::between(0, 1));
-  o.strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified", {"update", "frozen", "modified"});
+  o.run = study::integrator_options(cli, {.dynamics = {.time_step = 1e-3, .spectral_radius = 1.0, .tolerance = 1e-16,
+                                                       .residual_tolerance = 1e-9},
+                                          .end_time = defaults.t_end});
   o.out = cli.output_folder("--out", "results/" + defaults.example, "output folder");
   return o;
 }
 
-/// The coordinates [r, r_x] fixed at each end: 2 pins the position, 4 clamps the slope too.
-struct Supports {
-  int left = 0, right = 0;
-};
-
-/// Fixes the supports besides the dofs the cable fixes itself (again after a release).
-inline void fix_supports(const core::SlidingCable<2>& cable, core::Model& model, Supports supports) {
-  std::vector<int> fixed = cable.fixed_dofs(model.state());
-  for (const auto& [end, count] : {std::pair{cable.chain().front(), supports.left}, {cable.chain().back(), supports.right}})
-    for (int i = 0; i < count; ++i) fixed.push_back(model.state().blocks[end].offset + i);
-  std::sort(fixed.begin(), fixed.end());
-  model.set_fixed_dofs(fixed);
-}
-
-/// 000 Table 2: the set of merged-element weights k_i, its extremes and σ of eq. (42).
-struct WeightStatistics {
-  std::size_t count = 0;
-  double max = 1.0, min = 1.0, sigma = 0.0;
-};
-
-inline WeightStatistics weight_statistics(const std::vector<core::LengthControlEvent>& events) {
-  std::vector<double> weights;
-  for (const core::LengthControlEvent& e : events)
-    weights.insert(weights.end(), e.merged_weights.data(), e.merged_weights.data() + 3);  // k0, k1, k2
-  if (weights.empty()) return {};
-  double sum = 0.0;
-  for (double k : weights) sum += (k - 1) * (k - 1);
-  return {.count = weights.size(), .max = std::ranges::max(weights), .min = std::ranges::min(weights),
-          .sigma = std::sqrt(sum / static_cast<double>(weights.size()))};  // 000 eq. (42)
-}
-
-/// The event log: one row per event — time, split element, its weights before, the two merged
-/// elements' weights before (next to the slider, beyond), the new far/near/merged weights,
-/// fallback (000 eq. (38)), bounded (max_merge_weight), miss (29 columns).
-inline Eigen::MatrixXd length_control_log(const std::vector<core::LengthControlEvent>& events) {
-  Eigen::MatrixXd log(static_cast<Eigen::Index>(events.size()), 29);
-  for (std::size_t i = 0; i < events.size(); ++i) {
-    const core::LengthControlEvent& e = events[i];
-    log.row(static_cast<Eigen::Index>(i)) << e.time, e.grown_element, e.grown_weights.transpose(),
-        e.merged_near_weights.transpose(), e.merged_far_weights.transpose(), e.split_weights_far.transpose(),
-        e.split_weights_near.transpose(), e.merged_weights.transpose(), e.merge_fallback ? 1.0 : 0.0,
-        e.merge_bounded ? 1.0 : 0.0, e.merge_miss;
-  }
-  return log;
-}
-
 struct SlidingMassRun {
   SlidingMassOptions options;
-  Supports supports;
+  core::CableSupports supports;
   /// The mass's initial speed along the straight cable at rest (m/s): ṙ = ẋ r_x, r_x = (1, 0).
   double slider_speed = 0.0;
   int per_element = 10;  ///< centreline samples per element
@@ -125,10 +61,11 @@ struct SlidingMassRun {
 inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, solvers::ConstraintList constraints,
                              const SlidingMassRun& run) {
   const SlidingMassOptions& o = run.options;
-  study::time_steps(o.h, o.t_end);  // a span of no steps or of too many is refused
+  const double h = o.run.dynamics.time_step, rho_infinity = o.run.dynamics.spectral_radius;
+  study::time_steps(h, o.run.end_time);  // a span of no steps or of too many is refused
   model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
-  fix_supports(cable, model, run.supports);
-  solvers::GeneralizedAlpha integrator(model, std::move(constraints), o.dynamics());
+  cable.fix_supports(model, run.supports);
+  solvers::GeneralizedAlpha integrator(model, std::move(constraints), o.run.dynamics);
   if (run.slider_speed != 0.0) {
     integrator.set_velocity(cable.chain()[cable.slider()], Eigen::Vector4d(run.slider_speed, 0.0, 0.0, 0.0));
     integrator.set_velocity(cable.materials()[cable.slider()], Eigen::VectorXd::Constant(1, run.slider_speed));
@@ -136,8 +73,8 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
   integrator.initialize();
   const bool detachable = cable.particle() >= 0;
   const int points = o.elements * run.per_element + 1;
-  study::Recorder rec(integrator, {.folder = o.out, .name = o.example, .time_step = o.h, .csv_digits = 12});
-  rec.attributes({{"example", o.example}, {"element", o.kind}, {"rho_infinity", o.rho_infinity}, {"strategy", o.strategy}});
+  study::Recorder rec(integrator, {.folder = o.out, .name = o.example, .time_step = h, .csv_digits = 12});
+  rec.attributes({{"example", o.example}, {"element", o.kind}, {"rho_infinity", rho_infinity}, {"strategy", o.run.strategy}});
   //    The centreline at a constant number of points (after the mass leaves, the cable has one
   //    element less: its last point is repeated).
   rec.centerline(points, [&](const study::State& s) {
@@ -178,9 +115,8 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
   };
 
   //    After each step: the energy statistics, the length control (000 Table 1's split: the event,
-  //    the remap and the restart, timed), the release, and the element lengths over L_std but for
-  //    the two next to the slider while it is next to an end element (no node left to delete on
-  //    that side) and before the first event (initial mesh).
+  //    the remap and the restart, timed), the release, and the controlled element lengths over
+  //    L_std (SlidingCable::controlled_length_ratios) but before the first event (initial mesh).
   const double initial_energy = integrator.energies().total();
   double max_kinetic = 0.0, max_deviation = 0.0, max_jump = 0.0, segment_reference = initial_energy;
   double max_segment_drift = 0.0, min_ratio = 1e300, max_ratio = 0.0, control_seconds = 0.0;
@@ -213,7 +149,7 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
     }
     if (detachable && !cable.released()) {  // the element to an end shorter than SlidingCable::release_length
       const double rate = integrator.velocity()(model.state().blocks[cable.materials()[cable.slider()]].offset);
-      const double min_length = cable.release_length(o.h, rate);
+      const double min_length = cable.release_length(h, rate);
       if (cable.near_end(model.state(), 0, min_length)) {  // back at the clamp: a collision this model lacks
         support_time = integrator.time();
         std::printf("t = %.4f s: the mass reached the clamped end; the run stops\n", support_time);
@@ -223,35 +159,32 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
         const double before_release = integrator.energies().total();
         P.resize(0, 0);
         cable.release(model, P);
-        fix_supports(cable, model, run.supports);
+        cable.fix_supports(model, run.supports);
         separation_time = integrator.time();
         std::printf("t = %.4f s: the mass leaves the beam (energy change %.3e J)\n", separation_time,
                     restart(P, before_release));
       }
     }
     control_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int s = cable.slider(), last = static_cast<int>(cable.chain().size()) - 1;
-    if (!events.empty() && !cable.released())
-      for (int k = 0; k < last; ++k) {
-        if ((k == s - 1 || k == s) && (s - 1 == 0 || s + 1 == last)) continue;
-        const double ratio = cable.element_length(model.state(), k) / cable.standard_length();
-        min_ratio = std::min(min_ratio, ratio);
-        max_ratio = std::max(max_ratio, ratio);
-      }
+    if (!events.empty() && !cable.released()) {
+      const auto [shortest, longest] = cable.controlled_length_ratios(model.state());
+      min_ratio = std::min(min_ratio, shortest);
+      max_ratio = std::max(max_ratio, longest);
+    }
   };
-  rec.run(o.t_end, {.each_step = each_step, .stop_when = [&] { return support_time >= 0.0; }});
+  rec.run(o.run.end_time, {.each_step = each_step, .stop_when = [&] { return support_time >= 0.0; }});
   if (!events.empty())
-    rec.constant("length_control_events", length_control_log(events), "s, 1",
+    rec.constant("length_control_events", core::length_control_log(events), "s, 1",
                  "one row per length-control event: time (s), the grown element, then the weights before and after "
                  "(docs/rancf.md, the columns in the example's README)");
   rec.close();
   shapes.close();
 
-  const WeightStatistics weights = weight_statistics(events);
+  const core::WeightStatistics weights = core::weight_statistics(events);
   const double wall = rec.wall_seconds();
   output::JsonSummary summary;
-  summary.add("elements", o.elements).add("element_kind", o.kind).add("h", o.h).add("rho_inf", o.rho_infinity)
-      .add("strategy", o.strategy).add("t_end", integrator.time()).add("length_control_events", static_cast<int>(events.size()))
+  summary.add("elements", o.elements).add("element_kind", o.kind).add("h", h).add("rho_inf", rho_infinity)
+      .add("strategy", o.run.strategy).add("t_end", integrator.time()).add("length_control_events", static_cast<int>(events.size()))
       .add("min_element_length_ratio", events.empty() ? 0.0 : min_ratio)
       .add("max_element_length_ratio", events.empty() ? 0.0 : max_ratio)
       .add("max_energy_drift", max_deviation / max_kinetic).add("max_drift_between_events", max_segment_drift / max_kinetic)

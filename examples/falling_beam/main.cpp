@@ -37,7 +37,7 @@ int main(int argc, char** argv) try {
   // 2. The beam and the sliding mass (with the block it flies off in).
   core::Model model;
   core::SlidingCable<2> cable(model, {.length = 1.0, .elements = o.elements,
-                                      .section = examples::circular_section(0.01, 20e6, 7200),
+                                      .section = core::RancfSection::circular(0.01, 20e6, 7200),
                                       .slider_position = 0.1, .slider_mass = 0.8,
                                       .rational = o.kind == "ale-rancf", .detachable = true});
 

@@ -39,37 +39,23 @@ int main(int argc, char** argv) try {
 
   // 2. The stress-free shape: the lower semicircle, cut at the first mesh's material coordinates.
   const double R = 2.0, length = std::numbers::pi * R;
-  iga::CircularArc<2> arc;
-  arc.center = Eigen::Vector2d(R, 0.0);
-  arc.radius = R;
-  arc.start_angle = std::numbers::pi;  // from (0, 0) counter-clockwise through (R, −R) to (2R, 0)
-  arc.sweep = std::numbers::pi;
-  const auto exact_arc = [&](const std::vector<double>& x) { return core::CableReference::circular_arc(arc, x); };
-  // ALE-ANCF: each span the cubic Bézier with unit weights and the arc's end points and unit
-  // tangents at a third of its length (000 eq. (10): the ANCF cable with |r_x| = 1 at the nodes).
-  const auto hermite_arc = [&](const std::vector<double>& x) {
+  //    From (0, 0) counter-clockwise through (R, −R) to (2R, 0).
+  const iga::CircularArc<2> arc{.center = Eigen::Vector2d(R, 0.0), .radius = R, .start_angle = std::numbers::pi,
+                                .sweep = std::numbers::pi};
+  //    ALE-ANCF: each span the cubic Bézier with unit weights and the arc's end points and unit
+  //    tangents at a third of its length (000 eq. (10): the ANCF cable with |r_x| = 1 at the nodes).
+  const bool rational = o.kind == "ale-rancf";
+  const auto shape = [&](const std::vector<double>& x) {
     const core::CableReference exact = core::CableReference::circular_arc(arc, x);
-    std::vector<iga::RationalBezier<2>> pieces;
-    for (std::size_t k = 0; k + 1 < x.size(); ++k) {
-      const Eigen::Vector4d a = exact.node(static_cast<int>(k)), b = exact.node(static_cast<int>(k) + 1);
-      const double third = (x[k + 1] - x[k]) / 3;
-      iga::RationalBezier<2> piece{iga::RationalBezier<2>::Points(2, 4), Eigen::Vector4d::Ones()};
-      piece.points << a.head<2>(), a.head<2>() + third * a.tail<2>().normalized(),
-          b.head<2>() - third * b.tail<2>().normalized(), b.head<2>();
-      pieces.push_back(piece);
-    }
-    return core::CableReference(pieces, x);
+    return rational ? exact : exact.polynomial_interpolant();
   };
 
   // 3. The beam and the sliding mass.
   core::Model model;
-  const bool rational = o.kind == "ale-rancf";
   core::SlidingCable<2> cable(model, {.length = length, .elements = o.elements,
-                                      .section = examples::circular_section(0.02, 200e6, 7200),
+                                      .section = core::RancfSection::circular(0.02, 200e6, 7200),
                                       .slider_position = length / 16, .slider_mass = 0.8,
-                                      .rational = rational,
-                                      .shape = rational ? std::function<core::CableReference(const std::vector<double>&)>(exact_arc)
-                                                        : std::function<core::CableReference(const std::vector<double>&)>(hermite_arc)});
+                                      .rational = rational, .shape = shape});
 
   // 4. Integrate from rest with both ends pinned (positions fixed, slopes free), control the
   //    lengths, record, report (examples/common/sliding_mass.hpp).

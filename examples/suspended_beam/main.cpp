@@ -42,7 +42,7 @@ int main(int argc, char** argv) try {
   //    node, of equal magnitudes (000 eqs. (39)–(40)).
   core::Model model;
   core::SlidingCable<2> cable(model, {.length = 1.0, .elements = o.elements,
-                                      .section = examples::circular_section(0.01, 20e6, 7200),
+                                      .section = core::RancfSection::circular(0.01, 20e6, 7200),
                                       .slider_position = 0.1, .slider_mass = 5.0,
                                       .rational = o.kind == "ale-rancf",
                                       .two_sided_slider = slopes == "discontinuous"});

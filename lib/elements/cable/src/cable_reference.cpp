@@ -105,4 +105,17 @@ CableReference CableReference::circular_arc(const iga::CircularArc<2>& arc, std:
   return CableReference(pieces, std::move(breakpoints));
 }
 
+CableReference CableReference::polynomial_interpolant() const {
+  std::vector<iga::RationalBezier<2>> pieces;
+  for (int k = 0; k < elements(); ++k) {
+    const Eigen::Vector4d a = node(k), b = node(k + 1);
+    const double third = (breakpoints_[k + 1] - breakpoints_[k]) / 3;
+    iga::RationalBezier<2> piece{iga::RationalBezier<2>::Points(2, 4), Eigen::Vector4d::Ones()};
+    piece.points << a.head<2>(), a.head<2>() + third * a.tail<2>().normalized(),
+        b.head<2>() - third * b.tail<2>().normalized(), b.head<2>();
+    pieces.push_back(piece);
+  }
+  return CableReference(pieces, breakpoints_);
+}
+
 }  // namespace spar::core

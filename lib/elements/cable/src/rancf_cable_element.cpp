@@ -7,9 +7,16 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <type_traits>
 
 namespace spar::core {
+
+RancfSection RancfSection::circular(double radius, double young_modulus, double density) {
+  const double area = std::numbers::pi * radius * radius, inertia = area * radius * radius / 4;
+  return {.axial_stiffness = young_modulus * area, .bending_stiffness = young_modulus * inertia,
+          .mass_per_length = density * area};
+}
 
 namespace {
 

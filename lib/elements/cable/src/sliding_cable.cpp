@@ -9,7 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <string>
+#include <utility>
 
 namespace spar::core {
 
@@ -134,6 +137,19 @@ double SlidingCable<Dim>::deformed_length(const Configuration& q) const {
 }
 
 template <int Dim>
+std::pair<double, double> SlidingCable<Dim>::controlled_length_ratios(const Configuration& q) const {
+  const int s = slider_, last = static_cast<int>(chain_.size()) - 1;
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0.0;
+  for (int k = 0; k < last; ++k) {
+    if ((k == s - 1 || k == s) && (s - 1 == 0 || s + 1 == last)) continue;
+    const double ratio = element_length(q, k) / standard_length_;
+    shortest = std::min(shortest, ratio);
+    longest = std::max(longest, ratio);
+  }
+  return {shortest, longest};
+}
+
+template <int Dim>
 std::vector<int> SlidingCable<Dim>::fixed_dofs(const Configuration& q) const {
   std::vector<int> dofs;
   for (std::size_t i = 0; i < materials_.size(); ++i)
@@ -146,6 +162,21 @@ std::vector<int> SlidingCable<Dim>::fixed_dofs(const Configuration& q) const {
   }
   std::sort(dofs.begin(), dofs.end());
   return dofs;
+}
+
+template <int Dim>
+void SlidingCable<Dim>::fix_supports(Model& model, const CableSupports& supports) const {
+  std::vector<int> fixed = fixed_dofs(model.state());
+  for (const auto& [end, count] : {std::pair{chain_.front(), supports.left}, {chain_.back(), supports.right}}) {
+    if (count < 0 || count > 2 * Dim)
+      throw Error("a support fixing " + std::to_string(count) + " coordinates of an end node [r, r_x]",
+                  "core::SlidingCable::fix_supports",
+                  "fix 0 to " + std::to_string(2 * Dim) + " coordinates (" + std::to_string(Dim) +
+                      " pins the position, " + std::to_string(2 * Dim) + " clamps the slope too)");
+    for (int i = 0; i < count; ++i) fixed.push_back(model.state().blocks[end].offset + i);
+  }
+  std::sort(fixed.begin(), fixed.end());
+  model.set_fixed_dofs(fixed);
 }
 
 template <int Dim>

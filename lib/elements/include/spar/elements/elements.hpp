@@ -16,6 +16,7 @@
 #include <spar/elements/cable/cable_centerline.hpp>
 #include <spar/elements/cable/cable.hpp>
 #include <spar/elements/cable/cable_reference.hpp>
+#include <spar/elements/cable/length_control_log.hpp>
 #include <spar/elements/cable/rancf_cable_element.hpp>
 #include <spar/elements/cable/rancf_merging.hpp>
 #include <spar/elements/cable/rancf_segmentation.hpp>

@@ -58,6 +58,11 @@ public:
   /// start, breakpoints.front() = 0, back() = radius · sweep), one exact piece per span (A7.1 for
   /// a sweep below π; 000 eq. (43) once elevated). Throws spar::Error for a span of π or more.
   static CableReference circular_arc(const iga::CircularArc<2>& arc, std::vector<double> breakpoints);
+  /// The shape an ALE-ANCF cable (unit weights, 000 eq. (10)) can hold in place of this one: on
+  /// each span the cubic Bézier with unit weights through this shape's nodes, its inner control
+  /// points a third of the span's material length along the unit tangents there (|r_x| = 1 at the
+  /// nodes, the Hermite cubic of an arc-length parameterization). Same breakpoints.
+  CableReference polynomial_interpolant() const;
 
   int elements() const { return static_cast<int>(lengths_.size()); }
   const std::vector<double>& breakpoints() const { return breakpoints_; }

@@ -49,6 +49,11 @@ struct RancfSection {
   double mass_per_length = 0.0;    ///< ρA (kg/m)
   /// Kelvin–Voigt coefficient c (s): axial force EA (ε + c ε̇), moment EI (κ + c κ̇) (000 eq. (17)).
   double damping_coefficient = 0.0;
+
+  /// A solid circular rod of `radius` (m), Young's modulus E (Pa) and density ρ (kg/m³):
+  /// A = πr², I = A r²/4, so EA, EI = E A r²/4 and ρA (000 §6: r = 0.01 or 0.02 m, E = 20 or
+  /// 200 MPa, ρ = 7200 kg/m³). Undamped.
+  static RancfSection circular(double radius, double young_modulus, double density);
 };
 
 /// What a RANCF or ALE-RANCF element is built from.

@@ -34,6 +34,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace spar::core {
@@ -61,6 +62,12 @@ struct SlidingCableParameters {
   /// 0 to L), e.g. CableReference::circular_arc (000 §6.3). Empty: straight along +X from the
   /// origin with no reference strains (000 as written). Planar cables only.
   std::function<CableReference(const std::vector<double>& breakpoints)> shape;
+};
+
+/// The coordinates [r, r_x] fixed at each end of a cable, counted from the first of the end node's
+/// block: Dim pins the position, 2·Dim clamps the slope too (SlidingCable::fix_supports).
+struct CableSupports {
+  int left = 0, right = 0;
 };
 
 /// One length-control event.
@@ -98,6 +105,10 @@ public:
   double standard_length() const { return standard_length_; }
   /// The reference length of element k (between chain()[k] and chain()[k + 1]).
   double element_length(const Configuration& q, int k) const;
+  /// The shortest and the longest element over L_std among those length control keeps in
+  /// [0.5, 1.5] L_std once it has acted (000 §5): every element but, while the sliding node is
+  /// next to an end element (no node left to delete on that side), the two next to it.
+  std::pair<double, double> controlled_length_ratios(const Configuration& q) const;
   /// The weights of element k.
   const Eigen::Vector4d& weights(int k) const { return weights_[k]; }
   /// The stress-free shape, or null for a straight cable.
@@ -111,6 +122,9 @@ public:
   /// node but the sliding one (after release(): of every node) and, while the mass is on the
   /// cable, the reserved particle block.
   std::vector<int> fixed_dofs(const Configuration& q) const;
+  /// Fixes fixed_dofs() and the `supports` at the current end nodes (Model::set_fixed_dofs). Call
+  /// it again after release(), which changes both. Throws spar::Error for a count outside [0, 2·Dim].
+  void fix_supports(Model& model, const CableSupports& supports) const;
 
   /// The particle block (Dim entries) reserved for the released mass, or −1.
   int particle() const { return particle_; }
