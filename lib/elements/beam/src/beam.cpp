@@ -151,6 +151,7 @@ void GeometricallyExactBeam::build_elements(int quadrature_points) {
         throw Error("the centerline has zero speed at u = " + std::to_string(u), where,
                     "give a regular centerline (no coincident control points)");
       BeamGaussPoint gp;
+      gp.parameter = u;
       gp.weight = rule.weights[g] * half_length * jacobian;
       gp.part = part;
       for (int I = 0; I <= degree_; ++I) {

@@ -346,7 +346,7 @@ BeamStrains beam_strains(const GeometricallyExactBeam& beam, int e, int g, const
   const detail::InterpolatedFields f =
       detail::interpolate(beam, e, q, rel, gp.shape, gp.shape_derivative);
   const PointKinematics k = kinematics(rel, f);
-  return {k.w - gp.reference_translational_strain, k.kappa - gp.reference_curvature};
+  return {k.w - gp.reference_translational_strain, k.kappa - gp.reference_curvature, k.rotation};
 }
 
 void evaluate_beam_element(const GeometricallyExactBeam& beam, int e, const Configuration& q,

@@ -13,6 +13,7 @@
 #include <spar/elements/beam/centerline_sampler.hpp>
 #include <spar/elements/beam/distributed_moment.hpp>
 #include <spar/elements/beam/geometrically_exact_beam_element.hpp>
+#include <spar/elements/beam/section_resultants.hpp>
 #include <spar/elements/cable/cable_centerline.hpp>
 #include <spar/elements/cable/cable.hpp>
 #include <spar/elements/cable/cable_reference.hpp>

@@ -45,6 +45,7 @@ struct BeamParameters {
 
 /// Reference data of one Gauss point of a beam element.
 struct BeamGaussPoint {
+  double parameter = 0.0;  ///< u, the point's knot parameter
   double weight = 0.0;  ///< quadrature weight × dS/dξ (reference arc length per unit ξ)
   int part = 0;         ///< which constitutive part C_part is integrated here (see constitutive())
   std::array<double, max_beam_element_nodes> shape{};             ///< N_I

@@ -40,10 +40,12 @@ struct BeamElementResult {
   ElementMatrix stiffness;
 };
 
-/// Strain measures at one Gauss point of an element (003 eqs. 8, 41).
+/// Strain measures at one Gauss point of an element (003 eqs. 8, 41), and the section frame
+/// they are measured in.
 struct BeamStrains {
   Eigen::Vector3d translational;  ///< γ = Rᵀx′ − γ₀ (extension, two shears)
   Eigen::Vector3d curvature;      ///< κ = T(Θ)Θ′ − κ₀ (twist, two curvatures)
+  Eigen::Matrix3d rotation;       ///< R = R_r exp(Θ) (003 eq. 42)
 };
 
 /// Evaluates element e of `beam` in configuration q. Throws spar::Error when two control points
