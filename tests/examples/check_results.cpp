@@ -16,8 +16,10 @@
 //    changes between steps, and breaks the bound by 2πk/h ≫ V.
 // 2. The energy balance holds step by step: the numerical dissipation D (docs/dynamics.md D8)
 //    changes in one step by at most 1 % of the run's energy scale max(T + |Π| + |V_g| + |W_ext|).
+// 3. Every profile (profiles/<name>, docs/output.md) has a row per step, as many points as its
+//    arc lengths profiles/<name>_arc_length, which increase, and finite values.
 //
-// Exit 0 and one line "results consistent: …" when both hold; exit 1 naming the first violation.
+// Exit 0 and one line "results consistent: …" when all hold; exit 1 naming the first violation.
 // A file without frame nodes (ANCF models, whose nodes are vector blocks, or a model whose sliding
 // coordinate keeps the writer from storing velocities) is checked for the balance only.
 #include <spar/lie/exp.hpp>
@@ -63,6 +65,35 @@ Dataset read(hid_t file, const std::string& name) {
 int fail(const std::string& what) {
   std::printf("results inconsistent: %s\n", what.c_str());
   return 1;
+}
+
+/// The names of the links in group `name` (none if it does not exist).
+std::vector<std::string> members(hid_t file, const std::string& name) {
+  std::vector<std::string> names;
+  if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) return names;
+  const hid_t group = H5Gopen2(file, name.c_str(), H5P_DEFAULT);
+  H5G_info_t info;
+  H5Gget_info(group, &info);
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t size = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    std::string link(static_cast<std::size_t>(size), '\0');
+    H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, link.data(), link.size() + 1, H5P_DEFAULT);
+    names.push_back(link);
+  }
+  H5Gclose(group);
+  return names;
+}
+
+/// Check 3 for profile `name`: "" if it holds, else what is wrong.
+std::string check_profile(hid_t file, const std::string& name, std::size_t steps) {
+  const Dataset values = read(file, "profiles/" + name), arc = read(file, "profiles/" + name + "_arc_length");
+  if (values.dims.size() != 3 || values.dims[0] != steps || values.dims[1] != arc.values.size())
+    return "profiles/" + name + " is not steps × " + std::to_string(arc.values.size()) + " points × components";
+  for (std::size_t i = 1; i < arc.values.size(); ++i)
+    if (!(arc.values[i] > arc.values[i - 1])) return "profiles/" + name + "_arc_length does not increase";
+  if (!std::all_of(values.values.begin(), values.values.end(), [](double x) { return std::isfinite(x); }))
+    return "profiles/" + name + " holds a value that is not finite";
+  return "";
 }
 
 }  // namespace
@@ -148,10 +179,17 @@ int main(int argc, char** argv) try {
       return fail(what);
     }
   }
+  // 3. The profiles.
+  std::size_t profiles = 0;
+  for (const std::string& name : members(file, "profiles")) {
+    if (name.size() > 11 && name.ends_with("_arc_length")) continue;
+    if (const std::string wrong = check_profile(file, name, steps); !wrong.empty()) return fail(wrong);
+    ++profiles;
+  }
   H5Fclose(file);
-  std::printf("results consistent: %zu steps, %zu frame nodes; velocity mismatch at most %.3g of its bound; "
+  std::printf("results consistent: %zu steps, %zu frame nodes, %zu profiles; velocity mismatch at most %.3g of its bound; "
               "largest one-step change of the energy balance %.3g J of %.3g J\n",
-              steps, nodes, worst_ratio, worst_jump, scale);
+              steps, nodes, profiles, worst_ratio, worst_jump, scale);
   return 0;
 } catch (const std::exception& error) {
   return fail(error.what());

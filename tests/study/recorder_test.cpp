@@ -189,3 +189,52 @@ TEST_CASE("the recorder's results file holds the options of the command line the
   CHECK(file.string_attribute_of("/options", "--t-end").value == "0.04");    // its default
   CHECK(file.string_attribute_of("/options", "--out").value == out);
 }
+
+TEST_CASE("a profile is written per state as points × components, with its arc lengths", "[study]") {
+  // A profile of two points, (y, t) and (2y, 2t), on the falling body: every state's values and
+  // the constant arc lengths read back as declared.
+  const double h = 0.01;
+  FallingBody body(h);
+  const spar::test::ScratchFolder folder("study_profile");
+  study::Recorder rec(*body.integrator, {.folder = folder.file(""), .name = "fall", .time_step = h, .report = false});
+  rec.profile({.name = "pair", .unit = "m, s", .description = "(y, t) at the first point, twice that at the second"},
+              Eigen::Vector2d(0.25, 0.75), 2, [&](const study::State& s) {
+                Eigen::MatrixXd values(2, 2);
+                values << s.q.position[body.node].y(), s.time, 2 * s.q.position[body.node].y(), 2 * s.time;
+                return values;
+              });
+  CHECK_THROWS_WITH(rec.profile({.name = "pair", .unit = "1", .description = "again"}, Eigen::Vector2d(0, 1), 1,
+                                [](const study::State&) { return Eigen::MatrixXd::Zero(2, 1); }),
+                    Catch::Contains("declared twice"));
+  CHECK_THROWS_WITH(rec.profile({.name = "none", .unit = "1", .description = "no points"}, Eigen::VectorXd(), 1,
+                                [](const study::State&) { return Eigen::MatrixXd(); }),
+                    Catch::Contains("0 points"));
+  rec.run(0.05);
+  rec.close();
+
+  const spar::test::ReadOnlyFile file(folder.file("fall.h5"));
+  const spar::test::DatasetContents pair = file.read("/profiles/pair"), time = file.read("/time");
+  REQUIRE(pair.shape == std::vector<hsize_t>{6, 2, 2});
+  for (std::size_t k = 0; k < 6; ++k) {
+    const double t = time.values[k], y = exact(t).y();
+    CHECK(std::abs(pair.values[4 * k + 0] - y) < tolerance);
+    CHECK(pair.values[4 * k + 1] == t);
+    CHECK(std::abs(pair.values[4 * k + 2] - 2 * y) < tolerance);
+    CHECK(pair.values[4 * k + 3] == 2 * t);
+  }
+  CHECK(file.read("/profiles/pair_arc_length").values == std::vector<double>{0.25, 0.75});
+}
+
+TEST_CASE("a profile of the wrong size or with a NaN stops the run with the profile's name", "[study]") {
+  FallingBody body(0.01);
+  const spar::test::ScratchFolder folder("study_profile_refusals");
+  study::Recorder rec(*body.integrator, {.folder = folder.file(""), .name = "fall", .time_step = 0.01, .report = false});
+  rec.profile({.name = "short", .unit = "1", .description = "one row where two are declared"}, Eigen::Vector2d(0, 1), 1,
+              [](const study::State&) { return Eigen::MatrixXd::Zero(1, 1); });
+  CHECK_THROWS_WITH(rec.run(0.05), Catch::Contains("profiles[0] (short)") && Catch::Contains("2 × 1"));
+
+  study::Recorder nan(*body.integrator, {.folder = folder.file(""), .name = "nan", .time_step = 0.01, .report = false});
+  nan.profile({.name = "undefined", .unit = "1", .description = "NaN"}, Eigen::VectorXd::Zero(1), 1,
+              [](const study::State&) { return Eigen::MatrixXd::Constant(1, 1, std::nan("")); });
+  CHECK_THROWS_WITH(nan.run(0.05), Catch::Contains("profiles[0] (undefined)") && Catch::Contains("not finite"));
+}

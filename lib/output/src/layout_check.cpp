@@ -83,6 +83,15 @@ void check_layout(const ResultsLayout& layout, int flush_every, const std::strin
                       " components",
                   where, "give a scalar (1 component) or a vector (3 components) per point");
   }
+  std::set<std::string> profiles;
+  for (const ResultsProfile& profile : layout.profiles) {
+    check_quantity(profile.quantity, "profiles", profiles, where);
+    if (profile.quantity.integer || profile.points < 1 || profile.components < 1)
+      throw Error("layout.profiles entry \"" + profile.quantity.name + "\" has " + std::to_string(profile.points) +
+                      " points of " + std::to_string(profile.components) + " components" +
+                      (profile.quantity.integer ? " and is marked integer" : ""),
+                  where, "give at least one point of at least one component, stored as doubles");
+  }
   check_rigid_bodies(layout, where);
 }
 

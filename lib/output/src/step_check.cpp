@@ -53,6 +53,7 @@ public:
     if (step.probes.size() != layout_.probes.size())
       size_error("probes", step.probes.size(), std::to_string(layout_.probes.size()) + " (layout.probes)",
                  "pass one point per layout probe, in the same order");
+    check_profiles(step);
     check_counters(step);
     check_centerlines(step);
     check_finite_values(step);
@@ -77,7 +78,7 @@ private:
     if (bad != values + count)
       throw Error("step." + field + " " + entry(static_cast<std::size_t>(bad - values)) + " = " + format_double(*bad) +
                       " is not finite",
-                  where(), "check the run that computed it; only a scalar or probe declared may_be_undefined may be NaN");
+                  where(), "check the run that computed it; only a scalar, probe or profile declared may_be_undefined may be NaN");
   }
 
   /// Every value the step holds is finite, but NaN in a probe declared may_be_undefined (the
@@ -104,14 +105,34 @@ private:
         check_matrix("centerline_fields[" + std::to_string(k) + "][" + std::to_string(f) + "] (" +
                          layout_.centerline_fields[f].name + ")",
                      step.centerline_fields[k][f]);
+    for (std::size_t i = 0; i < step.profiles.size(); ++i)
+      check_matrix("profiles[" + std::to_string(i) + "] (" + layout_.profiles[i].quantity.name + ")", step.profiles[i],
+                   layout_.profiles[i].quantity.may_be_undefined);
   }
 
   /// check_finite for a matrix of points, its entries named by row and column.
-  void check_matrix(const std::string& field, const Eigen::MatrixXd& values) const {
+  void check_matrix(const std::string& field, const Eigen::MatrixXd& values, bool may_be_undefined = false) const {
     const auto rows = static_cast<std::size_t>(values.rows());
     check_finite(field, values.data(), static_cast<std::size_t>(values.size()), [rows](std::size_t i) {
       return "row " + std::to_string(i % rows) + ", column " + std::to_string(i / rows);
-    });
+    }, may_be_undefined);
+  }
+
+  /// One matrix per layout profile, of its points × components.
+  void check_profiles(const ResultsStep& step) const {
+    if (step.profiles.size() != layout_.profiles.size())
+      size_error("profiles", step.profiles.size(), std::to_string(layout_.profiles.size()) + " (layout.profiles)",
+                 "pass one matrix per layout profile, in the same order");
+    for (std::size_t i = 0; i < step.profiles.size(); ++i) {
+      const ResultsProfile& profile = layout_.profiles[i];
+      const Eigen::MatrixXd& values = step.profiles[i];
+      if (values.rows() != profile.points || values.cols() != profile.components)
+        size_error("profiles[" + std::to_string(i) + "] (" + profile.quantity.name + ")",
+                   static_cast<std::size_t>(values.size()),
+                   std::to_string(profile.points) + " × " + std::to_string(profile.components) + ", got " +
+                       std::to_string(values.rows()) + " × " + std::to_string(values.cols()),
+                   "evaluate the profile at the layout's points, one row each");
+    }
   }
 
   /// Scalars are finite (NaN only where declared may_be_undefined); the values of integer

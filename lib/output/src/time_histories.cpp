@@ -76,6 +76,10 @@ TimeHistories::TimeHistories(ResultsLayout layout) : layout_(std::move(layout)) 
       add_series("/centerline_fields/" + field.name + "/beam" + std::to_string(k), field.unit,
                  field.description + " (beam " + std::to_string(k) + ", at its centerline points)", shape);
     }
+  first_profile_ = static_cast<int>(series_.size());
+  for (const ResultsProfile& profile : layout_.profiles)
+    add_series("/profiles/" + profile.quantity.name, profile.quantity.unit, profile.quantity.description,
+               {static_cast<hsize_t>(profile.points), static_cast<hsize_t>(profile.components)});
   first_rigid_body_ = static_cast<int>(series_.size());
   for (std::size_t k = 0; k < layout_.rigid_bodies.size(); ++k)
     add_series("/rigid_bodies/body" + std::to_string(k), "m",
@@ -165,6 +169,8 @@ void TimeHistories::buffer(const ResultsStep& step) {
     for (std::size_t f = 0; f < step.centerline_fields[k].size(); ++f)
       series_[static_cast<std::size_t>(first_field_) + f * step.centerline_fields.size() + k].push_rows(
           step.centerline_fields[k][f]);
+  for (std::size_t i = 0; i < step.profiles.size(); ++i)
+    series_[static_cast<std::size_t>(first_profile_) + i].push_rows(step.profiles[i]);
   buffer_shapes(step);
   last_time_ = step.time;
 }

@@ -53,7 +53,7 @@ class TimeHistories {
 public:
   /// The series of `layout` (checked: check_layout): /time first, then the nodes' positions,
   /// quaternions and velocities, the multipliers, the scalars, probes, centerlines, centerline
-  /// fields, the shapes' vertices and their velocities, each as the layout has them.
+  /// fields, profiles, the shapes' vertices and their velocities, each as the layout has them.
   explicit TimeHistories(ResultsLayout layout);
 
   const ResultsLayout& layout() const { return layout_; }
@@ -86,6 +86,7 @@ private:
   int positions_ = -1, quaternions_ = -1, velocities_ = -1, multipliers_ = -1;
   int first_scalar_ = 0, first_probe_ = 0, first_centerline_ = 0;
   int first_field_ = 0;                 ///< field f of beam k is series first_field_ + f × beams + k
+  int first_profile_ = 0;               ///< profile i is series first_profile_ + i
   int first_rigid_body_ = 0;            ///< the vertices of shape k are series first_rigid_body_ + k
   int first_rigid_body_velocity_ = -1;  ///< their velocities series first_rigid_body_velocity_ + k, if any
   /// Per shape, its vertices in the body's frame (place_shapes).

@@ -14,7 +14,8 @@ void Recorder::Impl::require_declaring(const char* what) const {
 
 void Recorder::Impl::require_new_name(const std::string& name) const {
   const auto named = [&](const auto& entry) { return entry.quantity.name == name; };
-  if (std::any_of(scalars.begin(), scalars.end(), named) || std::any_of(vectors.begin(), vectors.end(), named))
+  if (std::any_of(scalars.begin(), scalars.end(), named) || std::any_of(vectors.begin(), vectors.end(), named) ||
+      std::any_of(profiles.begin(), profiles.end(), named))
     throw Error("the name '" + name + "' is declared twice", where(), "give each quantity its own name");
 }
 
@@ -122,6 +123,17 @@ void Recorder::centerline(int points, std::function<Eigen::MatrixXd(const State&
                           std::function<Eigen::MatrixXd(const State&)> velocities) {
   impl_->require_declaring("a centerline");
   impl_->lines.push_back({points, std::move(positions), std::move(velocities), {}});
+}
+
+void Recorder::profile(Quantity quantity, Eigen::VectorXd arc_length, int components,
+                       std::function<Eigen::MatrixXd(const State&)> values) {
+  impl_->require_declaring("a profile");
+  impl_->require_new_name(quantity.name);
+  if (arc_length.size() < 1 || components < 1 || !arc_length.allFinite())
+    throw Error("the profile '" + quantity.name + "' has " + std::to_string(arc_length.size()) + " points of " +
+                    std::to_string(components) + " components, or an arc length that is not finite",
+                impl_->where(), "give one finite arc length per point and at least one component");
+  impl_->profiles.push_back({std::move(quantity), std::move(arc_length), components, std::move(values)});
 }
 
 void Recorder::shape(const output::RigidBodyShape& shape) {

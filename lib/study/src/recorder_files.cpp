@@ -86,12 +86,20 @@ void Recorder::Impl::open() {
                         "exact for straight beams)"},
         {.name = "velocity", .unit = "m/s", .description = "velocity of the centerline point, inertial frame",
          .components = 3}};
+  for (const ProfileEntry& profile : profiles)
+    layout.profiles.push_back({.quantity = file_quantity(profile.quantity),
+                               .points = static_cast<int>(profile.arc_length.size()),
+                               .components = profile.components});
   multiplier_count = layout.multiplier_count;
   std::string header;
   if (!csv_names.empty()) header = resolve_csv();  // refuses a bad column before any file is made
   writer.emplace(options.folder + "/" + options.name + ".h5", std::move(layout), options.flush_every);
   writer->write_attribute("time_step", options.time_step);
   if (!finished_options().empty()) writer->write_options(finished_options());
+  for (const ProfileEntry& profile : profiles)
+    writer->write_constant("profiles/" + profile.quantity.name + "_arc_length", profile.arc_length, "m",
+                           "reference arc length of each point of profiles/" + profile.quantity.name +
+                               " from the start of its line");
   for (const Attribute& attribute : pending_attributes) write(attribute);
   pending_attributes.clear();
   if (!csv_names.empty()) csv.emplace(options.folder + "/" + options.name + ".csv", header, options.csv_digits);
@@ -130,6 +138,7 @@ void Recorder::Impl::write_file(Evaluation& e) {
   step.centerlines = e.centerlines();
   if (options.centerline_fields)
     for (const Line& line : lines) step.centerline_fields.push_back({line.arc_length, line.velocities(e.state)});
+  for (const ProfileEntry& profile : profiles) step.profiles.push_back(profile.values(e.state));
   writer->append(step);
 }
 

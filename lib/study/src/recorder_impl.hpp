@@ -35,6 +35,12 @@ struct Recorder::Impl {
     std::function<Eigen::MatrixXd(const State&)> positions, velocities;
     Eigen::MatrixXd arc_length;  ///< from the root at the start, points × 1 (centerline_fields)
   };
+  struct ProfileEntry {
+    Quantity quantity;
+    Eigen::VectorXd arc_length;
+    int components = 0;
+    std::function<Eigen::MatrixXd(const State&)> values;
+  };
   struct CsvColumn {
     bool vector = false;
     int index = 0, component = 0;
@@ -113,6 +119,7 @@ struct Recorder::Impl {
   std::vector<ScalarEntry> scalars;
   std::vector<VectorEntry> vectors;
   std::vector<Line> lines;
+  std::vector<ProfileEntry> profiles;
   std::vector<output::RigidBodyShape> shapes;
   std::vector<std::string> csv_names;
   std::vector<CsvColumn> csv_columns;

@@ -47,6 +47,15 @@ struct CenterlineField {
   int components = 1;       ///< 1 (a scalar per point) or 3 (a vector per point, inertial frame)
 };
 
+/// A quantity along a line at a fixed number of points, e.g. a beam's section forces at its Gauss
+/// points (core::section_resultants): stored per step as the dataset `/profiles/<name>`, points ×
+/// components. Not drawn by the XDMF sidecar (its points need not be the centerline's).
+struct ResultsProfile {
+  ResultsQuantity quantity;  ///< name, unit, description (not integer; may_be_undefined allowed)
+  int points = 0;            ///< ≥ 1
+  int components = 1;        ///< ≥ 1, e.g. 3 for a force in the inertial frame
+};
+
 /// How the XDMF sidecar draws a rigid body (docs/output.md, "Rigid bodies"): a box or the three
 /// axes of its frame, both given in the body's material frame and carried by the node's frame, so
 /// a vertex c of the shape is at x + R c. The writer stores the vertices of every step (the
@@ -86,6 +95,8 @@ struct ResultsLayout {
   std::vector<int> centerline_points;
   /// Point data of every beam's centerline points (none: the beams are bare polylines).
   std::vector<CenterlineField> centerline_fields;
+  /// Quantities along lines at points of their own (profiles/<name>).
+  std::vector<ResultsProfile> profiles;
   /// Shapes drawn at nodes in the XDMF sidecar, one grid each (none: the nodes are points only).
   /// A node may carry several shapes.
   std::vector<RigidBodyShape> rigid_bodies;
@@ -103,6 +114,8 @@ struct ResultsStep {
   /// Per beam, one matrix per layout.centerline_fields entry (in its order): centerline_points[k]
   /// rows of `components` values, one row per centerline point; empty if the layout has none.
   std::vector<std::vector<Eigen::MatrixXd>> centerline_fields;
+  /// One matrix per layout.profiles entry, in its order: points × components.
+  std::vector<Eigen::MatrixXd> profiles;
 };
 
 /// Writes a run's time histories into `<name>.h5` and its XDMF sidecar `<name>.xmf`.

@@ -3,7 +3,8 @@
 /// A study's run and what it records (docs/output.md, "Studies"). A driver declares what it
 /// wants to see — scalars and vectors (a value with its unit and meaning), the energy balance,
 /// the constraint residual and the Newton iterations, centerlines, rigid bodies' shapes, the
-/// columns of a CSV, snapshots of the centerlines, run metadata — and when; run() then steps the
+/// columns of a CSV, snapshots of the centerlines, profiles along beams (section forces and
+/// moments: core::section_resultants), run metadata — and when; run() then steps the
 /// integrator to the end time, drives the progress bar and writes the results file (HDF5 + XDMF
 /// through output::ResultsWriter), the CSV and the snapshots, keeping every scalar's running
 /// reductions for the JSON summary (output::JsonSummary). close() adds the solver's counters.
@@ -178,6 +179,15 @@ public:
     centerline(shared->size(), [shared](const State& s) -> Eigen::MatrixXd { return shared->positions(s.q); },
                std::move(velocities));
   }
+  /// A profile: a quantity along a line at `arc_length.size()` points of `components` values each,
+  /// written to the results file as profiles/<name> (points × components) at its states, the
+  /// points' reference arc lengths as the constant profiles/<name>_arc_length (m). `values`
+  /// returns points × components, e.g. a beam's section moments:
+  ///     const core::SectionPoints at = core::section_points(rod);
+  ///     rec.profile({.name = "section_moment", .unit = "N m", .description = "..."}, at.arc_length, 3,
+  ///                 [&](const study::State& s) { return core::section_resultants(rod, s.q).moment; });
+  void profile(Quantity quantity, Eigen::VectorXd arc_length, int components,
+               std::function<Eigen::MatrixXd(const State&)> values);
   /// A rigid body's shape in the XDMF sidecar (docs/output.md, "Rigid bodies").
   void shape(const output::RigidBodyShape& shape);
 
