@@ -16,10 +16,10 @@
 //   it swings in the XZ plane, reaches the vertical after about 0.47 s and bends on the way
 //   (up to 2.8 % of its length away from its chord; first flexible pinned–free mode 3.7 Hz).
 //   The rule is a geometrically exact beam on an open-uniform C² cubic NURBS mesh. The example
-//   writes the tip trajectory, the rule's distance from its chord and the energies (kinetic,
-//   strain, gravity potential, total) at every step. The energy drift is reported relative to
-//   m g L / 2, the potential energy released between the horizontal and the vertical. The last
-//   line of stdout is a JSON summary.
+//   writes the tip trajectory, the rule's distance from its chord, the energies (kinetic,
+//   strain, gravity potential, total) and the section forces and moments at every step. The
+//   energy drift is reported relative to m g L / 2, the potential energy released between the
+//   horizontal and the vertical. The last line of stdout is a JSON summary.
 #include <spar/spar.hpp>
 
 #include <memory_use.hpp>
@@ -92,7 +92,7 @@ int main(int argc, char** argv) try {
   integrator.initialize();
 
   // 5. Record every step (docs/output.md, "flexible_pendulum"): the tip, the rule's distance from
-  //    its chord, the energies and the drift relative to m g L / 2.
+  //    its chord, the energies and the drift relative to m g L / 2, the section forces and moments.
   study::Recorder rec(integrator, {.folder = out, .name = "flexible_pendulum", .time_step = h, .nodes = true,
                                    .velocities = true, .multipliers = true, .centerline_fields = true,
                                    .csv_digits = 15});
@@ -115,6 +115,14 @@ int main(int argc, char** argv) try {
   const study::Scalar residual =
       rec.constraint_residual({.description = "largest violation |Phi|_inf of the pin after the step"});
   rec.newton_iterations();
+  //    The section forces and moments along the rule (docs/beam.md B16), inertial frame.
+  const core::SectionPoints sections = core::section_points(rod);
+  rec.profile({.name = "section_force", .unit = "N", .description = "R n at the Gauss points, inertial frame"},
+              sections.arc_length, 3,
+              [&](const study::State& s) { return core::section_resultants(rod, s.q, sections).force; });
+  rec.profile({.name = "section_moment", .unit = "N m", .description = "R m at the Gauss points, inertial frame"},
+              sections.arc_length, 3,
+              [&](const study::State& s) { return core::section_resultants(rod, s.q, sections).moment; });
   rec.csv({"tip", "chord_deflection", "kinetic_energy", "strain_energy", "gravity_potential", "total_energy",
            "energy_drift", "constraint_residual", "newton_iterations", "external_work", "numerical_dissipation"});
   rec.run(t_end);
