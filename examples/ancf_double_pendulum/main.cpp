@@ -34,23 +34,23 @@ int main(int argc, char** argv) try {
   const examples::AncfChoice ancf = examples::ancf_options(cli, false);
   const int elements_oa = cli.elements("--elements-oa", 2, "elements on link OA", 1, examples::memory_use::ancf_double_pendulum);
   const int elements_ab = cli.elements("--elements-ab", 5, "elements on link AB", 1, examples::memory_use::ancf_double_pendulum);
-  const double h = cli.number("--h", 1e-4, "time step [s]", study::Range::positive());
-  const double t_end = cli.number("--t-end", 3.0, "end time [s]", study::Range::positive());
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
-  const std::string strategy = cli.text("--iteration-matrix", "modified", "update | frozen | modified (modified Newton)",
-                                        {"update", "frozen", "modified"});
-  const double contraction = cli.number("--refactor-contraction", 0.02,
-                                        "modified Newton refactorizes when an increment exceeds this times the previous one",
-                                        study::Range::positive(1.0));
-  const double tolerance = cli.number("--tolerance", 1e-16, "Newton: |[dq, h^2 beta dlambda]|^2",
-                                      study::newton_tolerances);
+  //    The Newton tests and the refactorization of modified Newton: step 4.
+  study::Integration run = study::integrator_options(
+      cli, {.time_step = 1e-4, .iteration_matrix = solvers::IterationMatrix::modified, .tolerance = 1e-16,
+            .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8},
+      {.end_time = 3.0, .iteration_matrix_option = "--iteration-matrix", .newton = study::NewtonOptions::tolerance});
+  const double h = run.dynamics.time_step;
+  run.dynamics.modified_newton_contraction =
+      cli.number("--refactor-contraction", 0.02,
+                 "modified Newton refactorizes when an increment exceeds this times the previous one",
+                 study::Range::positive(1.0));
   const int record_every = cli.integer("--record-every", 10, "steps between HDF5 records", 1);
   const std::string out = cli.output_folder("--out", "results/ancf_double_pendulum", "output folder");
   cli.applies_only_when("--refactor-contraction", "--iteration-matrix", {"modified"});  // modified Newton's test
   if (!cli.finish()) return 0;
   study::require_memory(static_cast<double>(elements_oa) + elements_ab, examples::memory_use::ancf_double_pendulum,
                         "options --elements-oa, --elements-ab");  // the two links together
-  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  study::time_steps(h, run.end_time);  // a span of no steps or of too many is refused
 
   // 2. The two links (001 §6), OA along +X from the origin, AB along +Y from A.
   const auto preprocessing_start = std::chrono::steady_clock::now();
@@ -87,11 +87,7 @@ int main(int argc, char** argv) try {
   // increments shrink by at least 50× per iteration (--refactor-contraction 0.02; the library's
   // default 0.5 kept one for ~350 steps at a contraction of ~0.2–0.3 and took 7.9 iterations a
   // step): a refactorization costs about six iterations (README, "Newton tolerances").
-  solvers::GeneralizedAlpha integrator(model, std::move(joints),
-                                       {.time_step = h, .spectral_radius = rho_infinity,
-                                        .iteration_matrix = solvers::iteration_matrix_from_string(strategy), .tolerance = tolerance,
-                                        .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8,
-                                        .modified_newton_contraction = contraction});
+  solvers::GeneralizedAlpha integrator(model, std::move(joints), run.dynamics);
   integrator.initialize();
 
   // 5. Record every --record-every steps: A, B, the energies and the drift; the summary's
@@ -117,7 +113,7 @@ int main(int argc, char** argv) try {
              [&](const study::State& s) { return core::ancf_node_position(s.q, link_ab.nodes.back()); });
   rec.csv({"A", "B", "kinetic_energy", "strain_energy", "gravity_potential", "total_energy", "energy_drift",
            "constraint_residual", "newton_iterations", "external_work", "numerical_dissipation"});
-  rec.run(t_end);
+  rec.run(run.end_time);
   rec.close();
 
   // 6. The summary.
@@ -125,9 +121,10 @@ int main(int argc, char** argv) try {
   const Eigen::Vector3d b = core::ancf_node_position(model.state(), link_ab.nodes.back());
   output::JsonSummary summary;
   summary.add("element", ancf.element).add("force", ancf.force).add("elements_oa", elements_oa).add("elements_ab", elements_ab)
-      .add("h", h).add("t_end", integrator.time()).add("iteration_matrix", strategy);
-  if (strategy == "modified") summary.add("refactor_contraction", contraction);  // only the options the run used
-  summary.add("tolerance", tolerance)
+      .add("h", h).add("t_end", integrator.time()).add("iteration_matrix", run.strategy);
+  if (run.strategy == "modified")  // only the options the run used
+    summary.add("refactor_contraction", run.dynamics.modified_newton_contraction);
+  summary.add("tolerance", run.dynamics.tolerance)
       .add("factorizations", counters.factorizations).add("steps", counters.steps)
       .add("newton_iterations", counters.newton_iterations)
       .add("max_constraint_residual", residual.max()).add("max_energy_drift", drift.max_abs())

@@ -32,12 +32,13 @@ int main(int argc, char** argv) try {
   study::CommandLine cli(argc, argv, "ancf_pendulum: paper 001's flexible pendulum (Figures 3-7)");
   const examples::AncfChoice ancf_element = examples::ancf_options(cli, true);
   const int elements = cli.elements("--elements", 8, "number of elements", 1, examples::memory_use::ancf_pendulum);
-  const double h = cli.number("--h", 1e-3, "time step [s]", study::Range::positive());
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]", study::Range::positive());
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
+  const study::Integration run = study::integrator_options(
+      cli, {.time_step = 1e-3, .tolerance = 1e-20, .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8},
+      {.iteration_matrix_option = ""});
+  const double h = run.dynamics.time_step;
   const std::string out = cli.output_folder("--out", "results/ancf_pendulum", "output folder");
   if (!cli.finish()) return 0;
-  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  study::time_steps(h, run.end_time);  // a span of no steps or of too many is refused
 
   // 2. The rod of 001 §6 along +X from the origin.
   const double length = 2.0, radius = 0.02;
@@ -82,9 +83,7 @@ int main(int argc, char** argv) try {
   };
 
   // 4. The integrator, from rest.
-  solvers::GeneralizedAlpha integrator(model, std::move(joints),
-                                       {.time_step = h, .spectral_radius = rho_infinity, .tolerance = 1e-20,
-                                        .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8});
+  solvers::GeneralizedAlpha integrator(model, std::move(joints), run.dynamics);
   integrator.initialize();
 
   // 5. Record every step: the tip, the energies and the drift relative to m g L/2.
@@ -105,7 +104,7 @@ int main(int argc, char** argv) try {
   rec.newton_iterations();
   rec.csv({"tip", "tip_velocity", "kinetic_energy", "strain_energy", "gravity_potential", "total_energy", "energy_drift",
            "constraint_residual", "newton_iterations", "external_work", "numerical_dissipation"});
-  rec.run(t_end);
+  rec.run(run.end_time);
   rec.close();
 
   // 6. The summary.
@@ -114,7 +113,7 @@ int main(int argc, char** argv) try {
   output::JsonSummary summary;
   summary.add("element", ancf_element.element);
   if (!ancf_element.gebt()) summary.add("force", ancf_element.force);  // only the options the run used
-  summary.add("elements", elements).add("h", h).add("rho_inf", rho_infinity).add("t_end", integrator.time())
+  summary.add("elements", elements).add("h", h).add("rho_inf", run.dynamics.spectral_radius).add("t_end", integrator.time())
       .add("steps", counters.steps).add("newton_iterations", counters.newton_iterations)
       .add("tip_x", r.x()).add("tip_y", r.y()).add("tip_z", r.z())
       .add("max_energy_drift", drift.max_abs()).add("max_constraint_residual", residual.max())

@@ -38,9 +38,9 @@ inline SlidingMassOptions sliding_mass_options(study::CommandLine& cli, const Sl
   SlidingMassOptions o{.example = defaults.example};
   o.kind = cli.text("--element", "ale-rancf", "ale-rancf or ale-ancf", {"ale-rancf", "ale-ancf"});
   o.elements = cli.elements("--elements", defaults.elements, "elements", 3, defaults.memory);
-  o.run = study::integrator_options(cli, {.dynamics = {.time_step = 1e-3, .spectral_radius = 1.0, .tolerance = 1e-16,
-                                                       .residual_tolerance = 1e-9},
-                                          .end_time = defaults.t_end});
+  o.run = study::integrator_options(
+      cli, {.time_step = 1e-3, .spectral_radius = 1.0, .tolerance = 1e-16, .residual_tolerance = 1e-9},
+      {.end_time = defaults.t_end});
   o.out = cli.output_folder("--out", "results/" + defaults.example, "output folder");
   return o;
 }
@@ -114,27 +114,15 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
     for (Eigen::Index i = 0; i < x.rows(); ++i) shapes.row({static_cast<double>(event), double(phase), x(i, 0), x(i, 1)});
   };
 
-  //    After each step: the energy statistics, the length control (000 Table 1's split: the event,
-  //    the remap and the restart, timed), the release, and the controlled element lengths over
-  //    L_std (SlidingCable::controlled_length_ratios) but before the first event (initial mesh).
-  const double initial_energy = integrator.energies().total();
-  double max_kinetic = 0.0, max_deviation = 0.0, max_jump = 0.0, segment_reference = initial_energy;
-  double max_segment_drift = 0.0, min_ratio = 1e300, max_ratio = 0.0, control_seconds = 0.0;
-  double separation_time = -1.0, support_time = -1.0;
+  //    After each step: the energy account (drift, drift between events, jumps at the events and
+  //    the release), the length control (000 Table 1's split: the event, the remap and the
+  //    restart, timed), the release, and the controlled element lengths over L_std
+  //    (SlidingCable::controlled_length_ratios) but before the first event (initial mesh).
+  study::EnergyLedger energy(integrator);
+  double min_ratio = 1e300, max_ratio = 0.0, control_seconds = 0.0, separation_time = -1.0, support_time = -1.0;
   std::vector<core::LengthControlEvent> events;
-  const auto restart = [&](const Eigen::MatrixXd& P, double before) {
-    integrator.remap(P);
-    integrator.initialize();
-    const double after = integrator.energies().total();
-    max_jump = std::max(max_jump, std::fabs(after - before));
-    segment_reference = after;
-    return after - before;
-  };
   const auto each_step = [&] {
-    const solvers::Energies energy = integrator.energies();
-    max_kinetic = std::max(max_kinetic, energy.kinetic);
-    max_deviation = std::max(max_deviation, std::fabs(energy.total() - initial_energy));
-    max_segment_drift = std::max(max_segment_drift, std::fabs(energy.total() - segment_reference));
+    energy.after_step();
     const auto start = std::chrono::steady_clock::now();
     Eigen::MatrixXd P;
     const Eigen::MatrixXd before = cable.sample_centerline(model.state(), run.per_element);
@@ -142,7 +130,7 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
       write_shape(events.size(), 0, before);
       write_shape(events.size(), 1, cable.sample_centerline(model.state(), run.per_element));
       events.push_back(*event);
-      restart(P, energy.total());
+      energy.restart(P);
       std::printf("t = %.4f s: %s; merged weights (%.4f, %.4f, %.4f)%s\n", event->time, event->description.c_str(),
                   event->merged_weights(0), event->merged_weights(1), event->merged_weights(2),
                   event->merge_fallback ? " (fallback k = 1)" : event->merge_bounded ? " (bounded)" : "");
@@ -156,13 +144,12 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
         return;
       }
       if (cable.near_end(model.state(), static_cast<int>(cable.chain().size()) - 1, min_length)) {
-        const double before_release = integrator.energies().total();
         P.resize(0, 0);
         cable.release(model, P);
         cable.fix_supports(model, run.supports);
         separation_time = integrator.time();
         std::printf("t = %.4f s: the mass leaves the beam (energy change %.3e J)\n", separation_time,
-                    restart(P, before_release));
+                    energy.restart(P));
       }
     }
     control_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -187,8 +174,10 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
       .add("strategy", o.run.strategy).add("t_end", integrator.time()).add("length_control_events", static_cast<int>(events.size()))
       .add("min_element_length_ratio", events.empty() ? 0.0 : min_ratio)
       .add("max_element_length_ratio", events.empty() ? 0.0 : max_ratio)
-      .add("max_energy_drift", max_deviation / max_kinetic).add("max_drift_between_events", max_segment_drift / max_kinetic)
-      .add("max_merge_energy_jump", max_jump / max_kinetic).add("weight_set_size", static_cast<int>(weights.count))
+      .add("max_energy_drift", energy.max_drift() / energy.max_kinetic())
+      .add("max_drift_between_events", energy.max_drift_between_restarts() / energy.max_kinetic())
+      .add("max_merge_energy_jump", energy.max_jump() / energy.max_kinetic())
+      .add("weight_set_size", static_cast<int>(weights.count))
       .add("weight_max", weights.max).add("weight_min", weights.min).add("weight_sigma", weights.sigma);
   if (detachable)
     summary.add("separation_time", separation_time).add("support_reached_time", support_time);

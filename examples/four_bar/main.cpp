@@ -33,17 +33,17 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   study::CommandLine cli(argc, argv, "four_bar: a flexible spatial four-bar driven at 10 rad/s");
-  const double h = cli.number("--h", 1e-4, "time step [s]", study::Range::positive());
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]", study::Range::positive());
+  study::Integration run = study::integrator_options(
+      cli, {.time_step = 1e-4, .tolerance = 1e-16, .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8},
+      {.iteration_matrix_option = "", .newton = study::NewtonOptions::tolerance});
+  const double h = run.dynamics.time_step, t_end = run.end_time, rho_infinity = run.dynamics.spectral_radius;
   const int elements = cli.elements("--elements", 4, "cubic NURBS elements per rod", 1, examples::memory_use::four_bar);
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
-  const double tolerance = cli.number("--tolerance", 1e-16, "Newton: |[dq, h^2 beta dlambda]|^2 (squared, m and rad)",
-                                      study::newton_tolerances);
   const std::string assembly = cli.text("--initial-assembly", "on", "consistent initial assembly", {"on", "off"});
-  const double stiffness_time = cli.number("--velocity-stiffness-time", 1.0,
-                                           "initial velocities projected in the metric M + tau^2 K: tau [s] "
-                                           "(0: the mass metric, an impulsive start)",
-                                           study::Range::between(0.0, 1e4));
+  run.dynamics.initial_assembly = assembly == "on";
+  run.dynamics.initial_velocity_stiffness_time =
+      cli.number("--velocity-stiffness-time", 1.0,
+                 "initial velocities projected in the metric M + tau^2 K: tau [s] (0: the mass metric, an impulsive start)",
+                 study::Range::between(0.0, 1e4));
   const double output_interval = cli.number("--output-interval", 0.0,
                                             "record every this many seconds, interpolated between steps "
                                             "(0: every step)", study::Range{0.0, INFINITY, false, true});
@@ -65,11 +65,7 @@ int main(int argc, char** argv) try {
   const examples::RigidFourBar& rigid = mechanism.rigid;
 
   // 3. The integrator; its first initialize() assembles the state and reports what it changed.
-  solvers::GeneralizedAlpha integrator(model, std::move(mechanism.joints),
-                                       {.time_step = h, .spectral_radius = rho_infinity, .tolerance = tolerance,
-                                        .constraint_tolerance = 1e-12, .residual_tolerance = 1e-8,
-                                        .initial_assembly = assembly == "on",
-                                        .initial_velocity_stiffness_time = stiffness_time});
+  solvers::GeneralizedAlpha integrator(model, std::move(mechanism.joints), run.dynamics);
   integrator.initialize();
   const solvers::InitialAssembly& assembled = integrator.initial_assembly();
   // The ground pivots' joints (four_bar_model.hpp: A is constraint 0, D constraint 3; a = the

@@ -30,11 +30,10 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   study::CommandLine cli(argc, argv, "heavy_top: the heavy top of Bruls, Cardona & Arnold (2012)");
-  const double h = cli.number("--h", 2.5e-4, "time step [s]", study::Range::positive());
-  const double t_end = cli.number("--t-end", 1.0, "end time [s]", study::Range::positive());
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
-  const double tolerance = cli.number("--tolerance", 1e-24, "Newton: |[dq, h^2 beta dlambda]|^2",
-                                      study::newton_tolerances);
+  const study::Integration run = study::integrator_options(
+      cli, {.time_step = 2.5e-4, .tolerance = 1e-24, .constraint_tolerance = 1e-12, .residual_tolerance = 1e-10},
+      {.iteration_matrix_option = "", .newton = study::NewtonOptions::tolerance});
+  const double h = run.dynamics.time_step, t_end = run.end_time, rho_infinity = run.dynamics.spectral_radius;
   const double reference_step = cli.number("--reference-step", 1e-5, "largest RK4 step of the reference [s]",
                                            study::Range::positive());
   const std::string out = cli.output_folder("--out", "results/heavy_top", "output folder");
@@ -61,10 +60,7 @@ int main(int argc, char** argv) try {
       joints::Attachment{body, -top.center_of_mass}, joints::Attachment{-1, Eigen::Vector3d::Zero()}, model.state()));
 
   // 5. The integrator, started with the top's velocity.
-  solvers::GeneralizedAlpha integrator(
-      model, std::move(joints),
-      {.time_step = h, .spectral_radius = rho_infinity, .tolerance = tolerance,
-       .constraint_tolerance = 1e-12, .residual_tolerance = 1e-10});
+  solvers::GeneralizedAlpha integrator(model, std::move(joints), run.dynamics);
   integrator.set_velocity(body, xdot0, omega0);
   integrator.initialize();
 

@@ -35,15 +35,15 @@ int main(int argc, char** argv) try {
   const auto started = std::chrono::steady_clock::now();  // the whole run, output included
   // 1. Parse options.
   study::CommandLine cli(argc, argv, "slider_crank: the flexible slider-crank of 003 section 5.1");
-  const double h = cli.number("--h", 5e-4, "time step [s]", study::Range::positive());
-  const double t_end = cli.number("--t-end", 0.2, "end time [s]", study::Range::positive());
-  const std::string strategy = cli.text("--strategy", "frozen", "iteration matrix: update | frozen | modified",
-                                        {"update", "frozen", "modified"});
+  //    003's Newton test: the increment at 1e-6, Phi at 1e-10 m, the residual untested.
+  study::Integration run = study::integrator_options(
+      cli, {.time_step = 5e-4, .iteration_matrix = solvers::IterationMatrix::frozen, .residual_tolerance = INFINITY},
+      {.end_time = 0.2, .newton = study::NewtonOptions::test_003});
+  const double h = run.dynamics.time_step;
   const int elements = cli.elements("--elements", 6, "cubic NURBS elements per rod", 1, examples::memory_use::slider_crank);
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
-  const study::NewtonTest newton = study::newton_test_options(cli);
-  const int max_iterations = cli.integer("--max-iterations", 25, "Newton iterations before a step is cut back", 1, 1000);
-  const std::string solver = cli.text("--solver", "klu", "sparse LU: klu | umfpack | eigen-lu", {"klu", "umfpack", "eigen-lu"});
+  run.dynamics.max_iterations = cli.integer("--max-iterations", 25, "Newton iterations before a step is cut back", 1, 1000);
+  run.dynamics.linear_solver = solvers::linear_solver_kind_from_string(
+      cli.text("--solver", "klu", "sparse LU: klu | umfpack | eigen-lu", {"klu", "umfpack", "eigen-lu"}));
   const double drive_rise_time = cli.number("--drive-rise-time", 0.0,
                                             "ramp the drive from 0 to M over this time [s] (0: the paper's step)",
                                             study::Range::between(0, 1e3));
@@ -52,7 +52,7 @@ int main(int argc, char** argv) try {
                  study::Range::between(0, 1e3));
   const std::string out = cli.output_folder("--out", "results/slider_crank", "output folder");
   if (!cli.finish()) return 0;
-  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  study::time_steps(h, run.end_time);  // a span of no steps or of too many is refused
 
   // 2. Build the mechanism of 003 Table 1 (examples/slider_crank/slider_crank_model.hpp): the
   //    rods, the slider, the joints, the driving moment and gravity.
@@ -65,13 +65,7 @@ int main(int argc, char** argv) try {
   const examples::DeformationRate rod2_rate(coupler, examples::SliderCrank::coupler_length);
 
   // 3. The integrator.
-  solvers::GeneralizedAlpha integrator(
-      model, std::move(mechanism.joints),
-      {.time_step = h, .spectral_radius = rho_infinity,
-       .iteration_matrix = solvers::iteration_matrix_from_string(strategy),
-       .tolerance = newton.tolerance, .constraint_tolerance = newton.constraint_tolerance,
-       .residual_tolerance = newton.residual_tolerance, .max_iterations = max_iterations,
-       .linear_solver = solvers::linear_solver_kind_from_string(solver)});
+  solvers::GeneralizedAlpha integrator(model, std::move(mechanism.joints), run.dynamics);
   integrator.initialize();
 
   // 4. Record (docs/output.md, "slider_crank") every `record_every` steps, the first and the last
@@ -80,7 +74,7 @@ int main(int argc, char** argv) try {
   study::Recorder rec(integrator, {.folder = out, .name = "slider_crank", .time_step = h,
                                    .schedule = study::Schedule::every_steps(record_every).and_last(), .nodes = true,
                                    .velocities = true, .multipliers = true, .centerline_fields = true});
-  rec.attributes({{"example", "slider_crank (003 section 5.1)"}, {"strategy", strategy},
+  rec.attributes({{"example", "slider_crank (003 section 5.1)"}, {"strategy", run.strategy},
                   {"output_interval", static_cast<double>(record_every) * h}});
   for (const core::GeometricallyExactBeam* rod : {&crank, &coupler})
     rec.centerline(core::CenterlineSampler(*rod, 10 * elements + 1));
@@ -121,7 +115,7 @@ int main(int argc, char** argv) try {
            "newton_iterations", "kinetic_energy", "strain_energy", "gravity_potential", "external_work",
            "numerical_dissipation"});
   std::optional<double> slider_x_at_0_1;  // the slider at t = 0.1 s, to compare runs and engines
-  rec.run(t_end, {.each_step = [&] {
+  rec.run(run.end_time, {.each_step = [&] {
                     if (std::abs(integrator.time() - 0.1) <= 0.5 * h) slider_x_at_0_1 = model.state().position[slider].x();
                   }});
   rec.close();
@@ -129,7 +123,7 @@ int main(int argc, char** argv) try {
 
   // 5. The summary.
   rec.summary({.energy_balance = true})
-      .add("h", h).add("strategy", strategy).add("jtheta_updates", integrator.counters().jtheta_evaluations)
+      .add("h", h).add("strategy", run.strategy).add("jtheta_updates", integrator.counters().jtheta_evaluations)
       .add("total_wall_s", total_wall).add("recorded_states", rec.states_written())
       .add("max_rod1_speed", speed.max_abs()).add("max_rod2_deformation_rate", rate.max())
       .add("max_constraint_residual", residual.max()).add("slider_x_at_0_1", slider_x_at_0_1)

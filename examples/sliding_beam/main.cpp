@@ -34,23 +34,20 @@ using namespace spar;
 int main(int argc, char** argv) try {
   // 1. Parse options.
   study::CommandLine cli(argc, argv, "sliding_beam: the eccentric sliding beam of 003 section 5.2");
-  const double h = cli.number("--h", 1e-3, "time step [s]", study::Range::positive());
-  const double t_end = cli.number("--t-end", 3.0, "end time if the slider has not reached B by then [s]",
-                                  study::Range::positive());
+  const study::Integration run = study::integrator_options(
+      cli, {.time_step = 1e-3, .tolerance = 1e-12, .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8},
+      {.end_time = 3.0, .end_time_help = "end time if the slider has not reached B by then [s]",
+       .newton = study::NewtonOptions::tolerance});
+  const double h = run.dynamics.time_step;
   const int elements = cli.elements("--elements", 16, "NURBS elements of the carrier beam", 1, examples::memory_use::sliding_beam);
   const int sliding_elements = cli.elements("--sliding-elements", 2, "NURBS elements of the sliding beam", 1,
                                             examples::memory_use::sliding_beam);
   const int degree = cli.integer("--degree", 2, "NURBS degree of both beams (003: 2)", 1, iga::max_degree);
-  const std::string strategy = cli.text("--strategy", "update", "iteration matrix: update | frozen | modified",
-                                        {"update", "frozen", "modified"});
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
-  const double tolerance = cli.number("--tolerance", 1e-12, "Newton: |[dq, h^2 beta dlambda]|^2",
-                                      study::newton_tolerances);
   const std::string out = cli.output_folder("--out", "results/sliding_beam", "output folder");
   if (!cli.finish()) return 0;
   study::require_memory(static_cast<double>(elements) + sliding_elements, examples::memory_use::sliding_beam,
                         "options --elements, --sliding-elements");  // the two beams together
-  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
+  study::time_steps(h, run.end_time);  // a span of no steps or of too many is refused
 
   // 2. Build the model of 003 Table 3 (examples/sliding_beam/sliding_beam_model.hpp): the two
   //    beams, the tip mass, gravity, the carrier's pins at A and B, the mass's pin at M and the
@@ -64,11 +61,7 @@ int main(int argc, char** argv) try {
   const int zeta_block = slide.zeta_block();
 
   // 3. The integrator, from rest.
-  solvers::GeneralizedAlpha integrator(
-      model, std::move(setup.joints),
-      {.time_step = h, .spectral_radius = rho_infinity,
-       .iteration_matrix = solvers::iteration_matrix_from_string(strategy), .tolerance = tolerance,
-       .constraint_tolerance = 1e-10, .residual_tolerance = 1e-8});
+  solvers::GeneralizedAlpha integrator(model, std::move(setup.joints), run.dynamics);
   integrator.initialize();
 
   // 4. Integrate until the slider locks at B, recording every step (docs/output.md), both beams'
@@ -76,7 +69,7 @@ int main(int argc, char** argv) try {
   const int carrier_samples = 8 * elements + 1, sliding_samples = 16 * sliding_elements + 1;
   study::Recorder rec(integrator, {.folder = out, .name = "sliding_beam", .time_step = h, .nodes = true,
                                    .multipliers = true, .csv_digits = 12});
-  rec.attributes({{"example", "sliding_beam"}, {"carrier_elements", elements}, {"strategy", strategy}});
+  rec.attributes({{"example", "sliding_beam"}, {"carrier_elements", elements}, {"strategy", run.strategy}});
   rec.centerline(carrier_samples, [&](const study::State& s) { return carrier.sample_centerline(s.q, carrier_samples); });
   rec.centerline(sliding_samples, [&](const study::State& s) { return sliding.sample_centerline(s.q, sliding_samples); });
   rec.snapshots({.file = "sliding_beam_snapshots.csv", .header = "t,beam,x,y,z",
@@ -100,7 +93,7 @@ int main(int argc, char** argv) try {
            "numerical_dissipation", "constraint_residual", "newton_iterations"});
   //    The integrator locates the arrival inside the step (the slider within 1 µm past B,
   //    DynamicOptions::event_tolerance), locks the joint there and finishes the step.
-  rec.run(t_end, {.stop_when = [&] { return slide.locked(); }});
+  rec.run(run.end_time, {.stop_when = [&] { return slide.locked(); }});
   const std::optional<double> arrival_time = slide.locked() ? std::optional(slide.lock_time()) : std::nullopt;
   if (arrival_time) rec.attributes({{"arrival_time", *arrival_time}});
   rec.events("the slider entering carrier elements, the lock at B");
@@ -111,7 +104,7 @@ int main(int argc, char** argv) try {
   rec.summary()
       .add("arrival_time", arrival_time)
       .add("h", h).add("elements", elements).add("sliding_elements", sliding_elements).add("degree", degree)
-      .add("strategy", strategy).add("max_constraint_residual", residual.max())
+      .add("strategy", run.strategy).add("max_constraint_residual", residual.max())
       .add("mass_x", mass_final.x()).add("mass_y", mass_final.y()).add("mass_z", mass_final.z())
       .print();
   return 0;

@@ -43,24 +43,23 @@ int main(int argc, char** argv) try {
   const std::string law = cli.text("--law", "cosine", "case 2: the deployment law (003 eqs. 54-57)",
                                    {"linear", "polynomial", "cycloid", "cosine"});
   const double t_f = cli.number("--t-f", 20.0, "case 2: deployment time of the law [s]", study::Range::positive());
-  const double h = cli.number("--h", driven ? 0.005 : 0.1, "time step [s] (003: 0.005 in case 2, 0.1 in case 1)",
-                              study::Range::positive());
-  const double t_end = cli.number("--t-end", driven ? 30.0 : 100.0, "end time [s] (case 1 ends once the sliders lock)",
-                                  study::Range::positive());
-  examples::TrussParameters parameters;  // 28 members per --elements (and so memory_use::truss_deployment)
-  parameters.elements = cli.elements("--elements", driven ? 4 : 1,
-                                     "quadratic NURBS elements per member (003: 1 in case 1, 4 in case 2)", 1,
-                                     examples::memory_use::truss_deployment);
-  const std::string strategy = cli.text("--strategy", "update", "iteration matrix", {"update", "frozen", "modified"});
-  const std::string linear_solver = cli.text("--linear-solver", "klu", "sparse direct solver", {"klu", "umfpack", "eigen-lu"});
-  const bool substructuring =
-      cli.text("--substructuring", "on", "KLU by members where cheaper (docs/dynamics.md D12)", {"on", "off"}) == "on";
-  const double rho_infinity = cli.number("--rho-inf", 0.9, "spectral radius at infinity", study::Range::between(0, 1));
   //    003's test: the increment at 1e-6 (a squared norm) and Phi at 1e-10 m. Case 2 leaves the
   //    dynamic residual untested: with `update` the residual test at 1e-8 of its terms gives the
   //    same lock time and residual vibration to 4 digits for 1.16-1.33x the iterations. Case 1
   //    (h = 0.1 s) tests it: untested, the last lock comes 33 ms early (README, "Newton's test").
-  const study::NewtonTest newton = study::newton_test_options(cli, driven ? INFINITY : 1e-8);
+  study::Integration run = study::integrator_options(
+      cli, {.time_step = driven ? 0.005 : 0.1, .residual_tolerance = driven ? INFINITY : 1e-8},
+      {.time_step_help = "time step [s] (003: 0.005 in case 2, 0.1 in case 1)", .end_time = driven ? 30.0 : 100.0,
+       .end_time_help = "end time [s] (case 1 ends once the sliders lock)", .newton = study::NewtonOptions::test_003});
+  const double h = run.dynamics.time_step, t_end = run.end_time;
+  examples::TrussParameters parameters;  // 28 members per --elements (and so memory_use::truss_deployment)
+  parameters.elements = cli.elements("--elements", driven ? 4 : 1,
+                                     "quadratic NURBS elements per member (003: 1 in case 1, 4 in case 2)", 1,
+                                     examples::memory_use::truss_deployment);
+  run.dynamics.linear_solver = solvers::linear_solver_kind_from_string(
+      cli.text("--linear-solver", "klu", "sparse direct solver", {"klu", "umfpack", "eigen-lu"}));
+  run.dynamics.substructuring =
+      cli.text("--substructuring", "on", "KLU by members where cheaper (docs/dynamics.md D12)", {"on", "off"}) == "on";
   const double output_interval = cli.number("--output-interval", driven ? 0.05 : 0.1,
                                             "time between the centerlines in the HDF5 file [s]", study::Range::positive());
   const std::string out = cli.output_folder("--out", "results/truss_deployment/" + (driven ? "case2_" + law : "case1"),
@@ -86,12 +85,7 @@ int main(int argc, char** argv) try {
   // 3. The integrator, from rest at β₀. The linear law starts with a finite rate: the initial
   //    assembly projects the velocities onto it in the mass metric (an impulsive start,
   //    docs/dynamics.md D6a).
-  solvers::GeneralizedAlpha integrator(
-      model, std::move(unit.joints),
-      {.time_step = h, .spectral_radius = rho_infinity,
-       .iteration_matrix = solvers::iteration_matrix_from_string(strategy), .tolerance = newton.tolerance,
-       .constraint_tolerance = newton.constraint_tolerance, .residual_tolerance = newton.residual_tolerance,
-       .linear_solver = solvers::linear_solver_kind_from_string(linear_solver), .substructuring = substructuring});
+  solvers::GeneralizedAlpha integrator(model, std::move(unit.joints), run.dynamics);
   integrator.initialize();
 
   // 4. Record D and the sliders every step (CSV), the members' centerlines every output interval
@@ -103,7 +97,7 @@ int main(int argc, char** argv) try {
                                                    .and_at(snapshot_times).and_last(),
                                    .nodes = true, .csv_digits = 12, .flush_every = 10});
   rec.attributes({{"example", "truss_deployment"}, {"case", load_case}, {"law", driven ? law : std::string("gravity")},
-                  {"elements_per_member", parameters.elements}, {"strategy", strategy}});
+                  {"elements_per_member", parameters.elements}, {"strategy", run.strategy}});
   std::vector<double> kinds;  // of the members, for the snapshots
   for (const examples::Member& m : unit.members) kinds.push_back(static_cast<double>(m.kind));
   for (const examples::Member& m : unit.members)
@@ -150,7 +144,7 @@ int main(int argc, char** argv) try {
       .add("peak_z_after_deployment", vibration ? std::optional(vibration->peak) : std::nullopt)
       .add("max_constraint_residual", residual.max())
       .add("initial_velocity_correction", integrator.initial_assembly().largest_velocity_change)
-      .add("h", h).add("elements", parameters.elements).add("strategy", strategy).add("t_end", integrator.time())
+      .add("h", h).add("elements", parameters.elements).add("strategy", run.strategy).add("t_end", integrator.time())
       .add("substructured_factorizations", integrator.counters().substructured_factorizations)
       .print();
   return 0;

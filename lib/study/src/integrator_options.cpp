@@ -2,10 +2,11 @@
 
 namespace spar::study {
 
-Integration integrator_options(CommandLine& cli, const IntegratorDefaults& defaults) {
-  Integration run{.dynamics = defaults.dynamics};
+Integration integrator_options(CommandLine& cli, const solvers::DynamicOptions& dynamics,
+                               const IntegratorDefaults& defaults) {
+  Integration run{.dynamics = dynamics};
   solvers::DynamicOptions& o = run.dynamics;
-  o.time_step = cli.number("--h", o.time_step, "time step [s]", Range::positive());
+  o.time_step = cli.number("--h", o.time_step, defaults.time_step_help, Range::positive());
   run.end_time = cli.number("--t-end", defaults.end_time, defaults.end_time_help, Range::positive());
   o.spectral_radius =
       cli.number("--rho-inf", o.spectral_radius, "spectral radius at infinity (1: no dissipation)", Range::between(0, 1));

@@ -6,8 +6,8 @@
 /// solvers::DynamicOptions the integrator takes, over the driver's own defaults:
 ///
 ///     study::CommandLine cli(argc, argv, "my_study: what it computes");
-///     const study::Integration run = study::integrator_options(
-///         cli, {.dynamics = {.time_step = 1e-3, .constraint_tolerance = 1e-12}, .end_time = 2.0});
+///     const study::Integration run =
+///         study::integrator_options(cli, {.time_step = 1e-3, .constraint_tolerance = 1e-12}, {.end_time = 2.0});
 ///     if (!cli.finish()) return 0;
 ///     study::time_steps(run.dynamics.time_step, run.end_time);
 ///     solvers::GeneralizedAlpha integrator(model, std::move(joints), run.dynamics);
@@ -21,36 +21,37 @@ namespace spar::study {
 
 /// Which Newton tolerances integrator_options reads.
 enum class NewtonOptions {
-  none,       ///< none: the defaults' tolerances as given
-  tolerance,  ///< --tolerance (the squared increment ‖[Δq, h²βΔλ]‖²), its default the defaults'
+  none,       ///< none: the driver's tolerances as given
+  tolerance,  ///< --tolerance (the squared increment ‖[Δq, h²βΔλ]‖²), its default the driver's
   test_003,   ///< newton_test_options: --tolerance, --constraint-tolerance, --residual-tolerance
-              ///< at 003's test (1e-6, 1e-10 m), the residual's default the defaults' residual_tolerance
+              ///< at 003's test (1e-6, 1e-10 m), the residual's default the driver's residual_tolerance
 };
 
-/// What integrator_options reads and the driver's defaults.
+/// What integrator_options reads beside --h and --rho-inf, and the driver's words and defaults
+/// that are not solvers::DynamicOptions fields.
 struct IntegratorDefaults {
-  /// The defaults of --h (time_step), --rho-inf (spectral_radius), the iteration matrix and the
-  /// Newton tolerances; every other field is passed through as given.
-  solvers::DynamicOptions dynamics;
+  std::string time_step_help = "time step [s]";
   double end_time = 1.0;  ///< --t-end's default [s]
   std::string end_time_help = "end time [s]";
   /// The option naming the iteration matrix (update | frozen | modified): "--strategy", another
-  /// name (ancf_double_pendulum: "--iteration-matrix"), or "" for none (dynamics' as given).
+  /// name (ancf_double_pendulum: "--iteration-matrix"), or "" for none (the driver's as given).
   std::string iteration_matrix_option = "--strategy";
   NewtonOptions newton = NewtonOptions::none;
 };
 
 /// A dynamic run's integrator options and its span, as the command line gave them.
 struct Integration {
-  solvers::DynamicOptions dynamics;  ///< the defaults' with the options read
+  solvers::DynamicOptions dynamics;  ///< the driver's with the options read
   double end_time = 0.0;             ///< --t-end [s]
   std::string strategy;              ///< the iteration matrix's name: update | frozen | modified
 };
 
 /// Reads --h (> 0), --t-end (> 0), --rho-inf (in [0, 1]), the iteration-matrix option and the
-/// Newton options `defaults` names, in that order, with the defaults' values. What the span
-/// allows is the driver's to check after finish() (time_steps: a step longer than the span, or
-/// too many steps, is refused).
-Integration integrator_options(CommandLine& cli, const IntegratorDefaults& defaults);
+/// Newton options `defaults` names, in that order, over `dynamics`: its time_step, spectral_radius,
+/// iteration_matrix and tolerances are the options' defaults, its other fields pass through as
+/// given. What the span allows is the driver's to check after finish() (time_steps: a step longer
+/// than the span, or too many steps, is refused).
+Integration integrator_options(CommandLine& cli, const solvers::DynamicOptions& dynamics,
+                               const IntegratorDefaults& defaults = {});
 
 }  // namespace spar::study

@@ -8,6 +8,7 @@
 #include <spar/output/recording_csv.hpp>
 #include <spar/output/recording_summary.hpp>
 #include <spar/study/command_line.hpp>
+#include <spar/study/energy_ledger.hpp>
 #include <spar/study/integrator_options.hpp>
 #include <spar/study/recorder.hpp>
 #include <spar/study/run_limits.hpp>
