@@ -50,7 +50,6 @@ int main(int argc, char** argv) try {
   if (!cli.finish()) return 0;
   study::require_memory(static_cast<double>(elements_oa) + elements_ab, examples::memory_use::ancf_double_pendulum,
                         "options --elements-oa, --elements-ab");  // the two links together
-  study::time_steps(h, run.end_time);  // a span of no steps or of too many is refused
 
   // 2. The two links (001 §6), OA along +X from the origin, AB along +Y from A.
   const auto preprocessing_start = std::chrono::steady_clock::now();

@@ -38,7 +38,6 @@ int main(int argc, char** argv) try {
   const double h = run.dynamics.time_step;
   const std::string out = cli.output_folder("--out", "results/ancf_pendulum", "output folder");
   if (!cli.finish()) return 0;
-  study::time_steps(h, run.end_time);  // a span of no steps or of too many is refused
 
   // 2. The rod of 001 §6 along +X from the origin.
   const double length = 2.0, radius = 0.02;

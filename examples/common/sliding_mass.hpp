@@ -62,7 +62,6 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
                              const SlidingMassRun& run) {
   const SlidingMassOptions& o = run.options;
   const double h = o.run.dynamics.time_step, rho_infinity = o.run.dynamics.spectral_radius;
-  study::time_steps(h, o.run.end_time);  // a span of no steps or of too many is refused
   model.set_gravity(Eigen::Vector3d(0.0, -9.81, 0.0));
   cable.fix_supports(model, run.supports);
   solvers::GeneralizedAlpha integrator(model, std::move(constraints), o.run.dynamics);
@@ -77,13 +76,7 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
   rec.attributes({{"example", o.example}, {"element", o.kind}, {"rho_infinity", rho_infinity}, {"strategy", o.run.strategy}});
   //    The centreline at a constant number of points (after the mass leaves, the cable has one
   //    element less: its last point is repeated).
-  rec.centerline(points, [&](const study::State& s) {
-    Eigen::MatrixXd p = cable.sample_centerline(s.q, run.per_element);
-    const Eigen::Index rows = p.rows();
-    p.conservativeResize(points, 3);
-    for (Eigen::Index i = rows; i < points; ++i) p.row(i) = p.row(rows - 1);
-    return p;
-  });
+  rec.centerline(points, [&](const study::State& s) { return cable.sample_centerline(s.q, run.per_element, points); });
   rec.energy_balance();
   rec.total_energy();
   rec.scalar({.name = "beam_length", .unit = "m", .description = "the cable's current length (sum of element arc lengths)"},
@@ -91,16 +84,11 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
   rec.scalar({.name = "slider_material_coordinate", .unit = "m",
               .description = "the sliding node's material coordinate (arc length from the left end)",
               .csv = "slider_material", .may_be_undefined = detachable},
-             [&](const study::State& s) {
-               return cable.released() ? std::nan("") : s.q.vector(cable.materials()[cable.slider()])(0);
-             });
+             [&](const study::State& s) { return cable.slider_coordinate(s.q); });
   rec.newton_iterations();
   rec.vector({.name = detachable ? "mass" : "slider", .unit = "m", .description = "the sliding mass, inertial frame",
               .csv = detachable ? "mass_x,mass_y" : "slider_x,slider_y"},
-             [&](const study::State& s) -> Eigen::Vector2d {
-               if (cable.released()) return s.q.vector(cable.particle());
-               return s.q.vector(cable.chain()[cable.slider()]).head<2>();
-             });
+             [&](const study::State& s) -> Eigen::Vector2d { return cable.mass_position(s.q); });
   std::vector<std::string> columns = {"kinetic_energy", "strain_energy", "gravity_potential", "total_energy",
                                       "beam_length", "slider_material", detachable ? "mass" : "slider"};
   if (detachable) {
@@ -182,7 +170,7 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
   if (detachable)
     summary.add("separation_time", separation_time).add("support_reached_time", support_time);
   else
-    summary.add("slider_material_coordinate", model.state().vector(cable.materials()[cable.slider()])(0));
+    summary.add("slider_material_coordinate", cable.slider_coordinate(model.state()));
   summary.add("steps", integrator.counters().steps).add("newton_iterations", integrator.counters().newton_iterations)
       .add("motion_time_s", wall - control_seconds).add("length_control_time_s", control_seconds).add("wall_s", wall)
       .print();

@@ -54,7 +54,6 @@ int main(int argc, char** argv) try {
   //    10 times off at 10¹², where τ²K swamps M in double precision; τ² overflowed at 1e300).
   cli.applies_only_when("--velocity-stiffness-time", "--initial-assembly", {"on"});
   if (!cli.finish()) return 0;
-  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
   study::require_within_run(output_interval, "--output-interval", "the file would hold the state at t = 0 only", t_end);
 
   // 2. Build the mechanism (examples/four_bar/four_bar_model.hpp): rods, coupler, joints, drive.

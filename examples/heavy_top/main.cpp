@@ -38,8 +38,7 @@ int main(int argc, char** argv) try {
                                            study::Range::positive());
   const std::string out = cli.output_folder("--out", "results/heavy_top", "output folder");
   if (!cli.finish()) return 0;
-  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
-  study::time_steps(reference_step, t_end, "--reference-step");  // and so for the RK4 reference
+  study::time_steps(reference_step, t_end, "--reference-step");  // a span the RK4 reference can take
 
   // 2. The top (Brüls, Cardona & Arnold 2012, §5.1) and its initial state.
   const examples::heavy_top::TopParameters top = examples::heavy_top::classic_top();

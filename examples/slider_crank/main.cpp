@@ -52,7 +52,6 @@ int main(int argc, char** argv) try {
                  study::Range::between(0, 1e3));
   const std::string out = cli.output_folder("--out", "results/slider_crank", "output folder");
   if (!cli.finish()) return 0;
-  study::time_steps(h, run.end_time);  // a span of no steps or of too many is refused
 
   // 2. Build the mechanism of 003 Table 1 (examples/slider_crank/slider_crank_model.hpp): the
   //    rods, the slider, the joints, the driving moment and gravity.

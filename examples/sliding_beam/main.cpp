@@ -47,7 +47,6 @@ int main(int argc, char** argv) try {
   if (!cli.finish()) return 0;
   study::require_memory(static_cast<double>(elements) + sliding_elements, examples::memory_use::sliding_beam,
                         "options --elements, --sliding-elements");  // the two beams together
-  study::time_steps(h, run.end_time);  // a span of no steps or of too many is refused
 
   // 2. Build the model of 003 Table 3 (examples/sliding_beam/sliding_beam_model.hpp): the two
   //    beams, the tip mass, gravity, the carrier's pins at A and B, the mass's pin at M and the

@@ -69,7 +69,6 @@ int main(int argc, char** argv) try {
   cli.applies_only_when("--t-f", "--case", {"2"});
   cli.applies_only_when("--substructuring", "--linear-solver", {"klu"});
   if (!cli.finish()) return 0;
-  study::time_steps(h, t_end);  // a span of no steps or of too many is refused
   if (driven)
     study::require_within_run(t_f, "--t-f", "the law would not finish, and the unit would not deploy, by the end", t_end);
   study::require_within_run(output_interval, "--output-interval", "the file would hold the members' centerlines at t = 0 only",

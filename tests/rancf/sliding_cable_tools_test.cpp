@@ -149,3 +149,30 @@ TEST_CASE("CableReference::polynomial_interpolant: unit weights, the arc's nodes
   }
   for (int k = 0; k < 8; ++k) CHECK((polynomial.weights(k) - Eigen::Vector4d::Ones()).norm() <= 1e-12);
 }
+
+TEST_CASE("SlidingCable: the mass, the slider's coordinate and a padded centerline across release()", "[rancf]") {
+  // A detachable cable whose slider starts next to its right end element, so that it can be
+  // released at once.
+  core::Model model;
+  core::SlidingCable<2> cable(model, {.length = 1.0, .elements = 6,
+                                      .section = core::RancfSection::circular(0.01, 20e6, 7200),
+                                      .slider_position = 0.95, .slider_mass = 0.8, .detachable = true});
+  const core::Configuration& q = model.state();
+  const Eigen::Vector2d node = q.vector(cable.chain()[cable.slider()]).head<2>();
+  CHECK(cable.mass_position(q) == node);
+  CHECK(cable.slider_coordinate(q) == Approx(0.95).epsilon(1e-15));
+  const Eigen::MatrixXd before = cable.sample_centerline(q, 10);
+  REQUIRE(before.rows() == 61);
+  CHECK(cable.sample_centerline(q, 10, 61) == before);  // nothing to pad
+
+  Eigen::MatrixXd P;
+  cable.release(model, P);
+  CHECK(cable.mass_position(q) == node);  // the particle, where the sliding node was
+  CHECK(std::isnan(cable.slider_coordinate(q)));
+  const Eigen::MatrixXd after = cable.sample_centerline(q, 10);
+  REQUIRE(after.rows() == 51);  // one element less
+  const Eigen::MatrixXd padded = cable.sample_centerline(q, 10, 61);
+  CHECK(padded.topRows(51) == after);
+  for (Eigen::Index i = 51; i < 61; ++i) CHECK(padded.row(i) == after.row(50));
+  CHECK_THROWS_WITH(cable.sample_centerline(q, 10, 50), Contains("at least"));
+}

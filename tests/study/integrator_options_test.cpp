@@ -90,3 +90,10 @@ TEST_CASE("integrator_options: options the driver does not offer and values out 
   CHECK_THROWS_WITH(read({"--h", "0"}, sliding_beam(), sliding_beam_defaults), Contains("--h"));
   CHECK_THROWS_WITH(read({"--strategy", "newton"}, sliding_beam(), sliding_beam_defaults), Contains("--strategy"));
 }
+
+TEST_CASE("integrator_options: a span of no steps is refused as soon as --h and --t-end are read", "[study]") {
+  CHECK_THROWS_WITH(read({"--h", "1e-2", "--t-end", "1e-3"}, sliding_beam(), sliding_beam_defaults),
+                    Contains("no step would be taken"));
+  CHECK_THROWS_WITH(read({"--h", "1e-9", "--t-end", "100"}, sliding_beam(), sliding_beam_defaults),
+                    Contains("steps"));
+}

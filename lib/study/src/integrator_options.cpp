@@ -8,6 +8,7 @@ Integration integrator_options(CommandLine& cli, const solvers::DynamicOptions& 
   solvers::DynamicOptions& o = run.dynamics;
   o.time_step = cli.number("--h", o.time_step, defaults.time_step_help, Range::positive());
   run.end_time = cli.number("--t-end", defaults.end_time, defaults.end_time_help, Range::positive());
+  time_steps(o.time_step, run.end_time);  // a span of no steps or of too many is refused
   o.spectral_radius =
       cli.number("--rho-inf", o.spectral_radius, "spectral radius at infinity (1: no dissipation)", Range::between(0, 1));
   run.strategy = std::string(solvers::to_string(o.iteration_matrix));

@@ -120,6 +120,29 @@ Eigen::MatrixXd SlidingCable<Dim>::sample_centerline(const Configuration& q, int
 }
 
 template <int Dim>
+Eigen::MatrixXd SlidingCable<Dim>::sample_centerline(const Configuration& q, int per_element, Eigen::Index rows) const {
+  Eigen::MatrixXd points = sample_centerline(q, per_element);
+  const Eigen::Index sampled = points.rows();
+  if (rows < sampled)
+    throw Error(std::to_string(rows) + " rows for a centerline of " + std::to_string(sampled) + " points",
+                "core::SlidingCable::sample_centerline", "give at least elements · per_element + 1 rows");
+  points.conservativeResize(rows, 3);
+  for (Eigen::Index i = sampled; i < rows; ++i) points.row(i) = points.row(sampled - 1);
+  return points;
+}
+
+template <int Dim>
+Eigen::Matrix<double, Dim, 1> SlidingCable<Dim>::mass_position(const Configuration& q) const {
+  if (released_) return q.vector(particle_);
+  return q.vector(chain_[slider_]).head(Dim);
+}
+
+template <int Dim>
+double SlidingCable<Dim>::slider_coordinate(const Configuration& q) const {
+  return released_ ? std::nan("") : q.vector(materials_[slider_])(0);
+}
+
+template <int Dim>
 double SlidingCable<Dim>::deformed_length(const Configuration& q) const {
   const iga::GaussRule rule = iga::gauss_legendre(8);
   double total = 0.0;

@@ -9,11 +9,11 @@
 ///     const study::Integration run =
 ///         study::integrator_options(cli, {.time_step = 1e-3, .constraint_tolerance = 1e-12}, {.end_time = 2.0});
 ///     if (!cli.finish()) return 0;
-///     study::time_steps(run.dynamics.time_step, run.end_time);
 ///     solvers::GeneralizedAlpha integrator(model, std::move(joints), run.dynamics);
 
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/study/command_line.hpp>
+#include <spar/study/run_limits.hpp>
 
 #include <string>
 
@@ -49,8 +49,8 @@ struct Integration {
 /// Reads --h (> 0), --t-end (> 0), --rho-inf (in [0, 1]), the iteration-matrix option and the
 /// Newton options `defaults` names, in that order, over `dynamics`: its time_step, spectral_radius,
 /// iteration_matrix and tolerances are the options' defaults, its other fields pass through as
-/// given. What the span allows is the driver's to check after finish() (time_steps: a step longer
-/// than the span, or too many steps, is refused).
+/// given. A span the run cannot take (time_steps: a step longer than the span, or more than
+/// max_time_steps steps) is refused here, as soon as --h and --t-end are read.
 Integration integrator_options(CommandLine& cli, const solvers::DynamicOptions& dynamics,
                                const IntegratorDefaults& defaults = {});
 

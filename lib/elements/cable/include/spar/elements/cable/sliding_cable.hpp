@@ -116,6 +116,9 @@ public:
   /// The centreline: `per_element` points per element plus the last end, (N·per_element + 1) × 3
   /// (z = 0 in 2D), along the cable.
   Eigen::MatrixXd sample_centerline(const Configuration& q, int per_element) const;
+  /// The same padded to `rows` rows by repeating the last point: a constant size across release(),
+  /// which leaves the cable one element shorter (a results file's fixed-size centerline dataset).
+  Eigen::MatrixXd sample_centerline(const Configuration& q, int per_element, Eigen::Index rows) const;
   /// The deformed length Σ ∫ |r_x| dx (8 Gauss points per element).
   double deformed_length(const Configuration& q) const;
   /// The global dofs to fix (the supports are the caller's): the material coordinates of every
@@ -129,6 +132,10 @@ public:
   /// The particle block (Dim entries) reserved for the released mass, or −1.
   int particle() const { return particle_; }
   bool released() const { return released_; }
+  /// Where the mass is: the sliding node's position r, or the particle's once released.
+  Eigen::Matrix<double, Dim, 1> mass_position(const Configuration& q) const;
+  /// The sliding node's material coordinate x (m from the cable's first end); NaN once released.
+  double slider_coordinate(const Configuration& q) const;
   /// The length below which the element between the sliding node and a free end is given up and
   /// the mass released (release()): 0.1 L_std, or four steps of the sliding node's travel at its
   /// material rate. A shorter ALE element has bending frequencies (EI/l³) the step no longer
