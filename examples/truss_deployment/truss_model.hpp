@@ -29,8 +29,6 @@
 #include <spar/spar.hpp>
 #include <spar/joints/joints.hpp>
 
-#include "deployment_laws.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -242,7 +240,7 @@ inline TrussUnit build_truss_unit(const TrussParameters& parameters) {
 /// deployed shape, and a driver kept on would hold the same motion a second time.
 inline void add_deployment_drivers(TrussUnit& unit, const std::string& law, double t_f) {
   const double beta0 = unit.parameters.initial_angle, beta_f = std::numbers::pi / 2.0;
-  const joints::TimeFunction angle = deployment_angle(law, beta0, beta_f, t_f);
+  const joints::TimeFunction angle = joints::motion_law(law, beta_f - beta0, t_f);  // 003 eqs. 54-57
   for (const TrussSlider& slider : unit.sliders) {
     const double sign = fold_sign(slider.bay);
     joints::TimeFunction turn{.value = [=](double t) { return sign * angle.value(t); },

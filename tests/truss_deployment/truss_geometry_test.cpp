@@ -1,5 +1,5 @@
-// The truss unit's geometry (examples/truss_deployment/truss_model.hpp, README "Geometry"), its
-// joints at t = 0 and the deployment laws of 003 eqs. (54)–(57).
+// The truss unit's geometry (examples/truss_deployment/truss_model.hpp, README "Geometry") and its
+// joints at t = 0 (the deployment laws, joints::motion_law: tests/joints/motion_law_test.cpp).
 #include "truss_model.hpp"
 
 #include <catch2/catch.hpp>
@@ -81,34 +81,6 @@ TEST_CASE("truss model: 28 members and every joint satisfied at t = 0 to 1e-12",
     CHECK(largest_violation(unit, 0.0) <= 1e-12);
     CHECK(unit.model.state().position[unit.d_node].isApprox(Eigen::Vector3d(8 * std::sin(p.initial_angle), 0, 2), 1e-14));
   }
-}
-
-TEST_CASE("deployment laws (003 eqs. 54-57): from beta0 to beta_f in t_f, derivatives by finite differences",
-          "[truss]") {
-  const double beta0 = 5 * pi / 180, beta_f = pi / 2, t_f = 20.0;
-  for (const char* name : examples::deployment_laws) {
-    INFO(name);
-    const joints::TimeFunction f = examples::deployment_angle(name, beta0, beta_f, t_f);
-    CHECK(std::abs(f.value(0.0)) <= 1e-15);
-    CHECK(std::abs(f.value(t_f) - (beta_f - beta0)) <= 1e-15);
-    CHECK(std::abs(f.value(25.0) - (beta_f - beta0)) <= 1e-15);  // held after t_f
-    CHECK(f.first_derivative(25.0) == 0.0);
-    // Central differences, step 1e-4 s: truncation (1e-8 · f‴) and round-off (1e-16/1e-4) below 1e-9.
-    for (const double t : {0.7, 5.0, 10.0, 13.3, 19.2}) {
-      const double dt = 1e-4;
-      CHECK(std::abs((f.value(t + dt) - f.value(t - dt)) / (2 * dt) - f.first_derivative(t)) <= 1e-9);
-      CHECK(std::abs((f.first_derivative(t + dt) - f.first_derivative(t - dt)) / (2 * dt) - f.second_derivative(t)) <= 1e-9);
-    }
-    // The smooth laws start and end at rest; the linear one runs at (β_f − β₀)/t_f throughout.
-    const double rate0 = f.first_derivative(0.0), rate_f = f.first_derivative(t_f - 1e-12);
-    if (std::string(name) == "linear") {
-      CHECK(std::abs(rate0 - (beta_f - beta0) / t_f) <= 1e-15);
-    } else {
-      CHECK(std::abs(rate0) <= 1e-9);
-      CHECK(std::abs(rate_f) <= 1e-9);
-    }
-  }
-  CHECK_THROWS_WITH(examples::deployment_angle("sine", beta0, beta_f, t_f), Catch::Contains("linear, polynomial, cycloid or cosine"));
 }
 
 TEST_CASE("truss model: 003's linear law from rest starts impulsively in the default mass metric", "[truss]") {

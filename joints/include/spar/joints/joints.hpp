@@ -19,5 +19,6 @@
 #include <spar/joints/sliding_joint.hpp>
 #include <spar/joints/revolute_joint.hpp>
 #include <spar/joints/spherical_joint.hpp>
+#include <spar/joints/motion_law.hpp>
 #include <spar/joints/time_function.hpp>
 #include <spar/joints/vector_kinematics.hpp>
