@@ -17,7 +17,8 @@ template <int transverse>
 void add_elements(Model& model, const AncfBeamParameters& p, double l, AncfBeam& beam) {
   // Equal elements share one set of tables (001 §6: "the invariants can be shared for elements
   // with equal dimensions").
-  const auto tables = std::make_shared<const AncfElementTables<transverse>>(l, p.material, p.section, p.method, p.remedy);
+  const auto tables = std::make_shared<const AncfElementTables<transverse>>(l, p.material, p.section, p.method, p.remedy,
+                                                                           p.shear_factor);
   for (int e = 0; e < p.elements; ++e) {
     std::vector<int> blocks{beam.nodes[e], beam.nodes[e + 1]};
     if constexpr (transverse == 3) {
@@ -54,6 +55,7 @@ AncfBeam add_ancf_beam(Model& model, const AncfBeamParameters& p) {
   // Checked before any block is added (the element tables would refuse the material only after
   // the nodes were in the model); a default SectionIntegrals has every integral zero.
   p.material.validate();
+  check_ancf_shear_factor(p.shear_factor, where);
   if (!(p.section.area() > 0.0))
     throw Error("the section has an area of " + significant(p.section.area()), where,
                 "give AncfBeamParameters::section, e.g. SectionIntegrals::circle(radius)");

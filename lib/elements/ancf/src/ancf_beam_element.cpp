@@ -12,6 +12,7 @@
 
 namespace spar::core {
 
+using detail::transverse_shear;
 using detail::variable_column;
 using detail::variable_phi;
 
@@ -61,9 +62,13 @@ double subtract_poisson_correction(const double (&M)[3][3][3][3], double c, cons
 
 }  // namespace
 
-double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double mu, double poisson_correction,
+double ancf_section_energy(const double (&M)[3][3][3][3], const AncfSectionLaw& law,
                            const Eigen::Matrix<double, 15, 1>& u, Eigen::Matrix<double, 15, 1>& gradient,
                            Eigen::Matrix<double, 15, 15>* hessian) {
+  const double lambda = law.lambda, mu = law.mu, poisson_correction = law.poisson_correction;
+  // (k − 1)μ, the shear factor's addition to the transverse shear moduli (eq. A22); 0 at k = 1,
+  // where every term it multiplies is skipped (the plain law's numbers, bit for bit).
+  const double shear_excess = (law.shear_factor - 1) * mu;
   // F(y, z) = Σ_p φ_p F_p (eq. A7).
   Matrix3 F[3];
   F[0] << u.segment<3>(0), u.segment<3>(9), u.segment<3>(12);
@@ -90,15 +95,18 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
       E[i][j] = E[j][i] = e_scalar[i][j] * e0e0;
     }
   }
-  // S̄_pq = ∫ φ_p φ_q S dA = Σ_ij M_pqij Ŝ_ij = λ tr(Ē_pq) I + 2μ Ē_pq with Ē_pq = Σ_ij M_pqij Ê_ij
-  // (Ŝ is linear in Ê), summed over i ≤ j (M and Ê are symmetric in i, j).
+  // S̄_pq = ∫ φ_p φ_q S dA = Σ_ij M_pqij Ŝ_ij = λ tr(Ē_pq) I + 2μ Ē_pq + 2(k − 1)μ X∘Ē_pq with
+  // Ē_pq = Σ_ij M_pqij Ê_ij (Ŝ is linear in Ê; X masks the transverse shear entries (0, 1), (0, 2)
+  // and their transposes, eq. A22), summed over i ≤ j (M and Ê are symmetric in i, j).
+  static const Matrix3 shear_mask = (Matrix3() << 0, 1, 1, 1, 0, 0, 1, 0, 0).finished();
   double W = 0.0;
   for (int p = 0; p < 3; ++p)
     for (int q = p; q < 3; ++q) {
       const double(&m)[3][3] = M[p][q];
       const double tail = m[1][1] * e_scalar[1][1] + 2 * m[1][2] * e_scalar[1][2] + m[2][2] * e_scalar[2][2];
       const Matrix3 e = m[0][0] * E[0][0] + 2 * m[0][1] * E[0][1] + 2 * m[0][2] * E[0][2] + tail * e0e0;
-      const Matrix3 s = 2 * mu * e + lambda * e.trace() * Matrix3::Identity();
+      Matrix3 s = 2 * mu * e + lambda * e.trace() * Matrix3::Identity();
+      if (shear_excess != 0.0) s += 2 * shear_excess * e.cwiseProduct(shear_mask);
       Sbar[p][q] = Sbar[q][p] = s;
       W += (p == q ? 0.5 : 1.0) * E[p][q].cwiseProduct(s).sum();  // W̄ = ½ Σ_pq Ê_pq : S̄_pq
     }
@@ -114,6 +122,7 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
   // ∂²W̄/∂u_v∂u_w = ∫ φ_p φ_q [S_αβ I + λ F_α F_βᵀ + μ(δ_αβ F Fᵀ + F_β F_αᵀ)] dA (eq. A15),
   // with ∫ φ_p φ_q F_α F_βᵀ dA = T_pq(α, β) = Σ_ij M_pqij F_i e_α (F_j e_β)ᵀ. F_i e_α vanishes for
   // i > 0 < α (F₁, F₂ have one column), which leaves ≤ 25 terms per (p, q) for all nine (α, β).
+  // The shear factor adds (k − 1)μ [X_αβ T_pq(β, α) + δ_αβ Σ_γ X_αγ T_pq(γ, γ)] (eq. A23).
   Matrix3 T[3][3][3][3];  // [p][q][α][β], p ≤ q
   for (int p = 0; p < 3; ++p)
     for (int q = p; q < 3; ++q)
@@ -138,6 +147,11 @@ double ancf_section_energy(const double (&M)[3][3][3][3], double lambda, double 
       Matrix3 block = Sbar[p][q](alpha, beta) * Matrix3::Identity() + lambda * T[p][q][alpha][beta] +
                       mu * T[p][q][beta][alpha];
       if (alpha == beta) block += mu * (T[p][q][0][0] + T[p][q][1][1] + T[p][q][2][2]);
+      if (shear_excess != 0.0) {
+        if (transverse_shear(alpha, beta)) block += shear_excess * T[p][q][beta][alpha];
+        else if (alpha == beta)
+          block += shear_excess * (alpha == 0 ? (T[p][q][1][1] + T[p][q][2][2]).eval() : T[p][q][0][0]);
+      }
       if (swapped) block.transposeInPlace();
       hessian->block<3, 3>(3 * v, 3 * w) = block;
       if (w != v) hessian->block<3, 3>(3 * w, 3 * v) = block.transpose();
@@ -283,8 +297,7 @@ double AncfBeamElement<transverse>::gerstmayr_force(const Vector& e, Vector& Q, 
       for (int l : row_vectors(v)) sum += B(v, l) * nodes.col(l);
       u.template segment<3>(3 * v) = sum;
     }
-    U += t.weight[g] * ancf_section_energy(t.moment, t.lambda, t.mu, t.poisson_correction, u, gradient,
-                                           K != nullptr ? &hessian : nullptr);
+    U += t.weight[g] * ancf_section_energy(t.moment, t.law, u, gradient, K != nullptr ? &hessian : nullptr);
     // Q = ∫ (B ⊗ I₃)ᵀ ∂W̄/∂u dx (eq. A16).
     for (int v = 0; v < 5; ++v)
       for (int l : row_vectors(v)) force.col(l) += t.weight[g] * B(v, l) * gradient.template segment<3>(3 * v);

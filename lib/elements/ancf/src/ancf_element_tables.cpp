@@ -16,8 +16,18 @@
 
 namespace spar::core {
 
+using detail::transverse_shear;
 using detail::variable_column;
 using detail::variable_phi;
+
+void check_ancf_shear_factor(double shear_factor, const char* where) {
+  // k = (∫τ dA)²/(A ∫τ² dA) for the energy-equivalent factors (Timoshenko's, Cowper's), ≤ 1 by
+  // Cauchy–Schwarz; its reciprocal, the shear form factor A/A_s ≥ 1 (6/5 for a rectangle), is
+  // the likely mix-up above 1 (docs/ancf.md §7).
+  if (!(shear_factor > 0.0 && shear_factor <= 1.0))
+    throw Error("the shear correction factor is " + significant(shear_factor), where,
+                "give 0 < k <= 1 (1: no correction, 5/6 for a rectangle); a form factor A/A_s >= 1 is 1/k");
+}
 
 // Shape functions -------------------------------------------------------------------------------
 
@@ -58,16 +68,21 @@ std::array<double, transverse> AncfShapeFunctions<transverse>::transverse_deriva
 template <int transverse>
 AncfElementTables<transverse>::AncfElementTables(double length_, const Material& material,
                                                  const SectionIntegrals& section, AncfForceMethod method_,
-                                                 AncfLockingRemedy remedy)
+                                                 AncfLockingRemedy remedy, double shear_factor)
     : method(method_), length(length_), density(material.density) {
   material.validate();
   if (!(length > 0.0) || !std::isfinite(length))
     throw Error("the element length is " + std::to_string(length), "core::AncfElementTables",
                 "give distinct end nodes");
+  check_ancf_shear_factor(shear_factor, "core::AncfElementTables");
   const double E = material.young_modulus, nu = material.poisson_ratio;
-  lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-  mu = E / (2 * (1 + nu));
-  if (remedy == AncfLockingRemedy::uniaxial_bending) poisson_correction = (lambda + 2 * mu - E) / 2;
+  const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  // The remedy's c uses the unscaled moduli: it concerns the normal stresses only, which k leaves
+  // alone (docs/ancf.md §7).
+  law = {.lambda = lambda,
+         .mu = mu,
+         .shear_factor = shear_factor,
+         .poisson_correction = remedy == AncfLockingRemedy::uniaxial_bending ? (lambda + 2 * mu - E) / 2 : 0.0};
   // M[p][q][i][j] = ∫ φ_p φ_q φ_i φ_j dA, φ = (1, y, z): the moment of y^(#1) z^(#2) (eq. A12).
   for (int p = 0; p < 3; ++p)
     for (int q = 0; q < 3; ++q)
@@ -121,7 +136,9 @@ void AncfElementTables<transverse>::compute_invariants() {
   // C_αβ = eᵀ(H_αβ ⊗ I₃)e with H_αβ = Σ_{v∈α, w∈β} φ_v φ_w X_vw, X_vw = sym(B_v B_wᵀ), over the
   // variables v = (a, b, c, g, h) of column α(v) and section function φ_p(v) (eq. A17).
   // K₁ = −(3λ + 2μ)/2 ∫ Σ_α H_αα dV (001 eq. 31, whose minus sign the text lost),
-  // τ = ∫ [λ/2 Σ_αβ H_αα ⊗ H_ββ + μ Σ_αβ H_αβ ⊗ H_αβ] dV (eq. 32 on node vectors, eq. A18).
+  // τ = ∫ [λ/2 Σ_αβ H_αα ⊗ H_ββ + Σ_αβ μ_αβ H_αβ ⊗ H_αβ] dV (eq. 32 on node vectors, eq. A18) with
+  // μ_αβ = kμ for the transverse shear pairs and μ otherwise (eq. A24; U₀ and K₁ keep μ).
+  const double lambda = law.lambda, mu = law.mu, poisson_correction = law.poisson_correction;
   invariant_constant = (9 * lambda / 8 + 3 * mu / 4) * moment[0][0][0][0] * length;
   invariant_linear.setZero();
   invariant_quartic = Eigen::MatrixXd::Zero(n * n, n * n);
@@ -146,8 +163,9 @@ void AncfElementTables<transverse>::compute_invariants() {
             double c = 0.0;
             // λ/2 (Σ_α H_αα) ⊗ (Σ_β H_ββ): both pairs within one column each.
             if (variable_column[v] == variable_column[w] && variable_column[v2] == variable_column[w2]) c += lambda / 2;
-            // μ Σ_αβ H_αβ ⊗ H_αβ: the second pair in the same columns as the first.
-            if (variable_column[v] == variable_column[v2] && variable_column[w] == variable_column[w2]) c += mu;
+            // Σ_αβ μ_αβ H_αβ ⊗ H_αβ: the second pair in the same columns as the first.
+            if (variable_column[v] == variable_column[v2] && variable_column[w] == variable_column[w2])
+              c += transverse_shear(variable_column[v], variable_column[w]) ? law.shear_factor * mu : mu;
             // The locking remedy's −c ∫ E_xx² dA on the variables a, b, c of column 1 (eq. A21).
             if (v < 3 && w < 3 && v2 < 3 && w2 < 3) c -= poisson_correction;
             if (c != 0.0 && M(v, w, v2, w2) != 0.0)

@@ -29,6 +29,12 @@ struct AncfBeamParameters {
   AncfElementKind kind = AncfElementKind::standard_24;
   AncfForceMethod method = AncfForceMethod::gerstmayr;
   AncfLockingRemedy remedy = AncfLockingRemedy::none;
+  /// Shear correction factor k of the transverse shear stresses, S_xy = 2kμ E_xy and
+  /// S_xz = 2kμ E_xz (docs/ancf.md §7): 1 (default) is the plain St. Venant–Kirchhoff law of
+  /// paper 001; a Timoshenko section's k (5/6 for a rectangle, or Cowper's,
+  /// CrossSection::rectangle(...).shear_coefficient_2) gives its shear deflection F L/(k G A).
+  /// It scales the torsional stiffness by k too (as in Chrono's ANCF 3243). 0 < k ≤ 1.
+  double shear_factor = 1.0;
   Material material;
   SectionIntegrals section;
 };
@@ -42,8 +48,8 @@ struct AncfBeam {
 };
 
 /// Adds the beam's blocks and elements. Throws spar::Error, before adding anything, for fewer
-/// than one element, a zero-length beam, a y direction along the beam, an invalid material or a
-/// section of no area (a default SectionIntegrals).
+/// than one element, a zero-length beam, a y direction along the beam, an invalid material, a
+/// section of no area (a default SectionIntegrals) or a shear factor outside (0, 1].
 AncfBeam add_ancf_beam(Model& model, const AncfBeamParameters& parameters);
 
 /// The position r of an ANCF node (the first three coordinates of its block). Throws spar::Error

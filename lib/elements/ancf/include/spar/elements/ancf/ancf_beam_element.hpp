@@ -11,8 +11,9 @@
 /// must be straight and undistorted (r_x, r_y, r_z orthonormal), so F = ∂r/∂(x, y, z) is the
 /// deformation gradient and E = ½(FᵀF − I) the Green–Lagrange strain.
 ///
-/// Material: St. Venant–Kirchhoff, S = λ tr(E) I + 2μ E, optionally with a Poisson locking remedy
-/// (AncfLockingRemedy). The elastic force and its Jacobian come from method II (default: section
+/// Material: St. Venant–Kirchhoff, S = λ tr(E) I + 2μ E, optionally with a shear correction factor
+/// k on the transverse shear stresses (S_xy = 2kμ E_xy, S_xz = 2kμ E_xz) and a Poisson locking
+/// remedy (AncfLockingRemedy). The elastic force and its Jacobian come from method II (default: section
 /// resultants of the first Piola–Kirchhoff stress P = F S, Gerstmayr & Shabana 2005, 001 eqs.
 /// 38–51; docs/ancf.md eqs. A12–A16) or method I (invariant tensors, García-Vallejo et al. 2004,
 /// 001 eqs. 31–37; eqs. A17–A20). Both integrate the section in closed form through its moments
@@ -54,6 +55,20 @@ enum class AncfLockingRemedy {
   /// (docs/ancf.md eq. A21). Zero change at ν = 0.
   uniaxial_bending,
 };
+
+/// The section law (docs/ancf.md eqs. A2–A4, A21, A22): St. Venant–Kirchhoff with Lamé λ and μ,
+/// the transverse shear stresses scaled by the shear correction factor k (S_xy = 2kμ E_xy,
+/// S_xz = 2kμ E_xz; k = 1 is the plain law) and the locking remedy's c (0 without it).
+struct AncfSectionLaw {
+  double lambda = 0.0;              ///< Lamé λ = Eν/((1 + ν)(1 − 2ν))
+  double mu = 0.0;                  ///< Lamé μ = E/(2(1 + ν))
+  double shear_factor = 1.0;        ///< k (eq. A22)
+  double poisson_correction = 0.0;  ///< c = (λ + 2μ − E)/2 with the uniaxial_bending remedy (eq. A21)
+};
+
+/// Throws spar::Error unless the shear correction factor k is finite with 0 < k ≤ 1 (docs/ancf.md
+/// §7: k ≤ 1 for every energy-equivalent factor; a value above 1 is the reciprocal form factor).
+void check_ancf_shear_factor(double shear_factor, const char* where);
 
 /// Shape functions of the element with `transverse` functions per transverse gradient (2: the
 /// 24-coordinate element, 3: the 30-coordinate element). Coordinates are grouped in 3-vectors
@@ -97,15 +112,12 @@ struct AncfElementTables {
 
   AncfElementTables(double length, const Material& material, const SectionIntegrals& section,
                     AncfForceMethod method = AncfForceMethod::gerstmayr,
-                    AncfLockingRemedy remedy = AncfLockingRemedy::none);
+                    AncfLockingRemedy remedy = AncfLockingRemedy::none, double shear_factor = 1.0);
 
   AncfForceMethod method;
   double length;
-  double lambda;  ///< Lamé λ = Eν/((1 + ν)(1 − 2ν))
-  double mu;      ///< Lamé μ = E/(2(1 + ν))
+  AncfSectionLaw law;
   double density;
-  /// c = (λ + 2μ − E)/2 with the uniaxial_bending remedy, 0 without (eq. A21).
-  double poisson_correction = 0.0;
   /// M[p][q][i][j] = ∫ φ_p φ_q φ_i φ_j dA with φ = (1, y, z) (docs/ancf.md eq. A12).
   double moment[3][3][3][3];
   std::array<double, points> weight;  ///< Gauss weight × l
@@ -119,7 +131,8 @@ struct AncfElementTables {
   Eigen::Matrix<double, n, 1> gravity_weights;
   /// Method I only (empty otherwise): U₀ = (9λ/8 + 3μ/4) A l, the scalar K₁ (K₁ = κ₁ ⊗ I₃) and
   /// τ_abcd (n² × n², row a + n b, column c + n d), the invariant tensor on node vectors:
-  /// ¼ τ(e, e, e, e) = ¼ Σ τ_abcd (e_a · e_b)(e_c · e_d) (docs/ancf.md eqs. A17–A18).
+  /// ¼ τ(e, e, e, e) = ¼ Σ τ_abcd (e_a · e_b)(e_c · e_d) (docs/ancf.md eqs. A17–A18, with the
+  /// shear factor eq. A24).
   double invariant_constant = 0.0;
   Eigen::Matrix<double, n, n> invariant_linear;
   Eigen::MatrixXd invariant_quartic;
@@ -148,11 +161,11 @@ private:
 
 /// The section-integrated strain energy density W̄ = ∫ W dA of a SVK material at one axial point,
 /// its gradient with respect to u = (a, b, c, g, h) (the section resultants of P, docs/ancf.md
-/// eq. A14) and, if `hessian` is not null, its Hessian (eq. A15). Allocation-free.
-/// `poisson_correction` is c of eq. A21 (0: the plain St. Venant–Kirchhoff energy).
-double ancf_section_energy(const double (&moment)[3][3][3][3], double lambda, double mu,
-                           double poisson_correction, const Eigen::Matrix<double, 15, 1>& u,
-                           Eigen::Matrix<double, 15, 1>& gradient, Eigen::Matrix<double, 15, 15>* hessian);
+/// eq. A14) and, if `hessian` is not null, its Hessian (eq. A15; with the shear factor eq. A23).
+/// Allocation-free.
+double ancf_section_energy(const double (&moment)[3][3][3][3], const AncfSectionLaw& law,
+                           const Eigen::Matrix<double, 15, 1>& u, Eigen::Matrix<double, 15, 1>& gradient,
+                           Eigen::Matrix<double, 15, 15>* hessian);
 
 template <int transverse>
 class AncfBeamElement final : public Element {
