@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 
+#include <limits>
 #include <random>
 
 #include "ancf_reference.hpp"
@@ -34,7 +35,7 @@ struct OneElement {
 
   explicit OneElement(const core::SectionIntegrals& section,
                       core::AncfForceMethod method = core::AncfForceMethod::gerstmayr,
-                      core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none) {
+                      core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none, double shear_factor = 1.0) {
     const core::AncfBeam beam = core::add_ancf_beam(
         model, {.start = Eigen::Vector3d(0.1, -0.2, 0.3),
                 .end = Eigen::Vector3d(0.1, -0.2, 0.3) + length * Eigen::Vector3d(1, 2, 2) / 3.0,
@@ -42,6 +43,7 @@ struct OneElement {
                 .kind = transverse == 2 ? core::AncfElementKind::standard_24 : core::AncfElementKind::higher_order_30,
                 .method = method,
                 .remedy = remedy,
+                .shear_factor = shear_factor,
                 .material = material,
                 .section = section});
     element = dynamic_cast<const core::AncfBeamElement<transverse>*>(&model.element(beam.elements[0]));
@@ -64,8 +66,9 @@ double relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& reference
 
 template <int transverse>
 void check_against_finite_differences(const core::SectionIntegrals& section, core::AncfForceMethod method,
-                                      core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none) {
-  OneElement<transverse> one(section, method, remedy);
+                                      core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none,
+                                      double shear_factor = 1.0) {
+  OneElement<transverse> one(section, method, remedy, shear_factor);
   using Vector = typename core::AncfBeamElement<transverse>::Vector;
   using Matrix = typename core::AncfBeamElement<transverse>::Matrix;
   for (unsigned seed : {1u, 2u, 3u}) {
@@ -93,8 +96,9 @@ void check_against_finite_differences(const core::SectionIntegrals& section, cor
 }
 
 template <int transverse>
-void check_against_volume_integration(const core::SectionIntegrals& section, const test::SectionQuadrature& rule) {
-  OneElement<transverse> one(section);
+void check_against_volume_integration(const core::SectionIntegrals& section, const test::SectionQuadrature& rule,
+                                      double shear_factor = 1.0) {
+  OneElement<transverse> one(section, core::AncfForceMethod::gerstmayr, core::AncfLockingRemedy::none, shear_factor);
   using Vector = typename core::AncfBeamElement<transverse>::Vector;
   using Matrix = typename core::AncfBeamElement<transverse>::Matrix;
   for (unsigned seed : {4u, 5u}) {
@@ -127,9 +131,9 @@ TEST_CASE("ANCF force and Jacobian against finite differences", "[ancf][element]
 
 template <int transverse>
 void check_methods_agree(const core::SectionIntegrals& section,
-                         core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none) {
-  OneElement<transverse> one(section, core::AncfForceMethod::gerstmayr, remedy);
-  OneElement<transverse> two(section, core::AncfForceMethod::invariant, remedy);
+                         core::AncfLockingRemedy remedy = core::AncfLockingRemedy::none, double shear_factor = 1.0) {
+  OneElement<transverse> one(section, core::AncfForceMethod::gerstmayr, remedy, shear_factor);
+  OneElement<transverse> two(section, core::AncfForceMethod::invariant, remedy, shear_factor);
   using Vector = typename core::AncfBeamElement<transverse>::Vector;
   using Matrix = typename core::AncfBeamElement<transverse>::Matrix;
   for (unsigned seed : {6u, 7u}) {
@@ -182,6 +186,101 @@ TEST_CASE("ANCF Poisson locking remedy: derivatives and both methods", "[ancf][e
   const double U1 = with.element->elastic_force(e, Q1, nullptr), U2 = without.element->elastic_force(e, Q2, nullptr);
   CHECK(std::fabs(U1 - U2) <= 1e-13 * U2);
   CHECK(relative_error(Q1, Q2) < 1e-13);
+}
+
+TEST_CASE("ANCF shear factor: force and Jacobian against finite differences", "[ancf][element][shear]") {
+  // k = 5/6 (a rectangle's Timoshenko factor); with the remedy k = 0.6, so that neither term hides
+  // in the other. The excess (k − 1)μ is 17 % and 40 % of μ: a wrong term fails by O(1e-2).
+  const double k = 5.0 / 6.0;
+  for (const auto method : {core::AncfForceMethod::gerstmayr, core::AncfForceMethod::invariant}) {
+    INFO((method == core::AncfForceMethod::gerstmayr ? "method II" : "method I"));
+    check_against_finite_differences<2>(core::SectionIntegrals::circle(0.03), method, core::AncfLockingRemedy::none, k);
+    check_against_finite_differences<2>(core::SectionIntegrals::polygon(l_angle()), method, core::AncfLockingRemedy::none, k);
+    check_against_finite_differences<3>(core::SectionIntegrals::circle(0.03), method, core::AncfLockingRemedy::none, k);
+    check_against_finite_differences<3>(core::SectionIntegrals::polygon(l_angle()), method, core::AncfLockingRemedy::none, k);
+    check_against_finite_differences<2>(core::SectionIntegrals::polygon(l_angle()), method,
+                                        core::AncfLockingRemedy::uniaxial_bending, 0.6);
+    check_against_finite_differences<3>(core::SectionIntegrals::polygon(l_angle()), method,
+                                        core::AncfLockingRemedy::uniaxial_bending, 0.6);
+  }
+}
+
+TEST_CASE("ANCF shear factor: methods I and II agree to round-off", "[ancf][element][shear]") {
+  check_methods_agree<2>(core::SectionIntegrals::polygon(l_angle()), core::AncfLockingRemedy::none, 5.0 / 6.0);
+  check_methods_agree<3>(core::SectionIntegrals::polygon(l_angle()), core::AncfLockingRemedy::none, 5.0 / 6.0);
+  check_methods_agree<2>(core::SectionIntegrals::circle(0.03), core::AncfLockingRemedy::uniaxial_bending, 0.6);
+  check_methods_agree<3>(core::SectionIntegrals::polygon(l_angle()), core::AncfLockingRemedy::uniaxial_bending, 0.6);
+}
+
+TEST_CASE("ANCF shear factor against a direct volume integration of S_xy = 2k mu E_xy", "[ancf][element][shear]") {
+  // The reference evaluates the modified law point by point (tests/support/ancf_reference.hpp):
+  // this proves the energy itself, which the finite differences only prove self-consistent.
+  check_against_volume_integration<2>(core::SectionIntegrals::polygon(l_angle()), test::polygon_quadrature(l_angle()),
+                                      5.0 / 6.0);
+  check_against_volume_integration<3>(core::SectionIntegrals::circle(0.03, {0.01, -0.02}),
+                                      test::circle_quadrature(0.03, {0.01, -0.02}), 5.0 / 6.0);
+}
+
+TEST_CASE("ANCF shear factor: the energy it scales, torsion, and the locking remedy beside it", "[ancf][element][shear]") {
+  using core::AncfLockingRemedy;
+  const auto section = core::SectionIntegrals::polygon(l_angle());
+  for (const auto method : {core::AncfForceMethod::gerstmayr, core::AncfForceMethod::invariant}) {
+    INFO((method == core::AncfForceMethod::gerstmayr ? "method II" : "method I"));
+    const auto energy = [&](double k, AncfLockingRemedy remedy) {
+      OneElement<3> one(section, method, remedy, k);
+      core::AncfBeam30Element::Vector Q;
+      return one.element->elastic_force(deformed(one, 8), Q, nullptr);
+    };
+    // W(k) = W(1) + (k − 1) 2μ (E_xy² + E_xz²) (eq. A22): U is affine in k, at a large strain:
+    // U(5/6) − U(1) = (5/6 − 1)/(1/2 − 1) (U(1/2) − U(1)). Round-off ≈ 1e-14 of U (method I): 1e-12.
+    const double U1 = energy(1.0, AncfLockingRemedy::none), U56 = energy(5.0 / 6.0, AncfLockingRemedy::none);
+    const double U12 = energy(0.5, AncfLockingRemedy::none);
+    CHECK(std::fabs((U56 - U1) - (U12 - U1) / 3) <= 1e-12 * U1);
+    CHECK(U56 < U1);
+    // The remedy (eq. A21) acts on E_xx only, k on E_xy, E_xz only: its correction does not
+    // depend on k (docs/ancf.md §7).
+    const double R1 = energy(1.0, AncfLockingRemedy::uniaxial_bending);
+    const double R56 = energy(5.0 / 6.0, AncfLockingRemedy::uniaxial_bending);
+    CHECK(std::fabs((R56 - U56) - (R1 - U1)) <= 1e-12 * U1);
+    CHECK(R1 < U1);
+  }
+  // Torsion lives in E_xy, E_xz (E_xy = −½ z θ′, E_xz = ½ y θ′ for a twist rate θ′), so k scales
+  // the torsional stiffness: a unit twist of node B about the axis has 2U = dᵀK d = k G I_p / l,
+  // I_p = ∫ (y² + z²) dA about the reference line (the section does not warp).
+  for (const double k : {1.0, 5.0 / 6.0}) {
+    OneElement<2> one(section, core::AncfForceMethod::gerstmayr, AncfLockingRemedy::none, k);
+    const auto e0 = one.element->coordinates(one.model.state());
+    const Eigen::Vector3d t = e0.segment<3>(15);  // r_x,B: the axis
+    core::AncfBeam24Element::Vector d = core::AncfBeam24Element::Vector::Zero();
+    d.segment<3>(18) = t.cross(Eigen::Vector3d(e0.segment<3>(18)));  // δr_y,B
+    d.segment<3>(21) = t.cross(Eigen::Vector3d(e0.segment<3>(21)));  // δr_z,B
+    core::AncfBeam24Element::Vector Q;
+    core::AncfBeam24Element::Matrix K;
+    one.element->elastic_force(e0, Q, &K);
+    const double Ip = section.moment(2, 0) + section.moment(0, 2);
+    CHECK(d.dot(K * d) == Approx(k * material.shear_modulus() * Ip / length).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("ANCF shear factor input errors", "[ancf][element][shear]") {
+  // 0 < k ≤ 1: k ≤ 0 leaves no shear stiffness, and above 1 is the reciprocal (form factor A/A_s).
+  for (const double k : {0.0, -0.5, 1.2, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    INFO("k = " << k);
+    core::Model model;
+    const int blocks = model.state().block_count();
+    CHECK_THROWS_WITH(core::add_ancf_beam(model, {.shear_factor = k, .material = material,
+                                                  .section = core::SectionIntegrals::circle(0.01)}),
+                      Catch::Contains("shear correction factor") && Catch::Contains("add_ancf_beam"));
+    CHECK(model.state().block_count() == blocks);  // refused before anything is added
+    CHECK_THROWS_WITH(core::AncfElementTables<3>(1.0, material, core::SectionIntegrals::circle(0.01),
+                                                 core::AncfForceMethod::invariant, core::AncfLockingRemedy::none, k),
+                      Catch::Contains("shear correction factor"));
+  }
+  for (const double k : {1.0, 1e-3}) {
+    core::Model model;
+    CHECK_NOTHROW(core::add_ancf_beam(model, {.shear_factor = k, .material = material,
+                                              .section = core::SectionIntegrals::circle(0.01)}));
+  }
 }
 
 TEST_CASE("ANCF rigid motions are strain free", "[ancf][element]") {

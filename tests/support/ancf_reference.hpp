@@ -119,7 +119,10 @@ VolumeReference<transverse> volume_reference(const core::AncfBeamElement<transve
   using Ref = VolumeReference<transverse>;
   constexpr int n = Ref::n;
   const auto& t = element.tables();
-  const double l = t.length, lambda = t.lambda, mu = t.mu, h = 1e-30;
+  const double l = t.length, lambda = t.law.lambda, mu = t.law.mu, h = 1e-30;
+  // The shear factor's (k − 1)μ on the transverse shear entries xy, xz (docs/ancf.md eq. A22).
+  const double excess = (t.law.shear_factor - 1) * mu;
+  const Eigen::Matrix3d shear = (Eigen::Matrix3d() << 0, 1, 1, 1, 0, 0, 1, 0, 0).finished();
   Ref out;
   const double gx[5] = {-0.906179845938664, -0.5384693101056831, 0.0, 0.5384693101056831, 0.906179845938664};
   const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
@@ -141,22 +144,25 @@ VolumeReference<transverse> volume_reference(const core::AncfBeamElement<transve
       Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
       for (int k = 0; k < n; ++k) F += e.template segment<3>(3 * k) * dS.row(k);
       const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
-      const Eigen::Matrix3d Sp = lambda * E.trace() * Eigen::Matrix3d::Identity() + 2 * mu * E;
+      const Eigen::Matrix3d Sp =
+          lambda * E.trace() * Eigen::Matrix3d::Identity() + 2 * mu * E + 2 * excess * shear.cwiseProduct(E);
       const Eigen::Matrix3d P = F * Sp;
       out.energy += w * 0.5 * E.cwiseProduct(Sp).sum();
       for (int k = 0; k < n; ++k) {
         out.force.template segment<3>(3 * k) += w * P * dS.row(k).transpose();
         for (int m = 0; m < n; ++m) {
           out.mass.template block<3, 3>(3 * k, 3 * m) += w * t.density * S(k) * S(m) * Eigen::Matrix3d::Identity();
-          // ∂P/∂F contracted with the shape gradients: δ_ik S_JL + λ F_iJ F_kL + μ(F_iL F_kJ + δ_JL (FFᵀ)_ik).
+          // ∂P/∂F contracted with the shape gradients: δ_ik S_JL + λ F_iJ F_kL + μ_JL F_iL F_kJ
+          // + δ_JL Σ_γ μ_Jγ F_iγ F_kγ, with μ_JL = μ + (k − 1)μ X_JL.
           Eigen::Matrix3d K = Eigen::Matrix3d::Zero();
           for (int J = 0; J < 3; ++J)
             for (int L = 0; L < 3; ++L) {
               const double c = dS(k, J) * dS(m, L);
               if (c == 0.0) continue;
               K += c * (Sp(J, L) * Eigen::Matrix3d::Identity() + lambda * F.col(J) * F.col(L).transpose() +
-                        mu * F.col(L) * F.col(J).transpose());
-              if (J == L) K += c * mu * F * F.transpose();
+                        (mu + excess * shear(J, L)) * F.col(L) * F.col(J).transpose());
+              if (J == L)
+                for (int a = 0; a < 3; ++a) K += c * (mu + excess * shear(J, a)) * F.col(a) * F.col(a).transpose();
             }
           out.stiffness.template block<3, 3>(3 * k, 3 * m) += w * K;
         }
