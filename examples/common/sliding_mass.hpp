@@ -159,7 +159,8 @@ inline void run_sliding_mass(core::Model& model, core::SlidingCable<2>& cable, s
   const double wall = rec.wall_seconds();
   output::JsonSummary summary;
   summary.add("elements", o.elements).add("element_kind", o.kind).add("h", h).add("rho_inf", rho_infinity)
-      .add("strategy", o.run.strategy).add("t_end", integrator.time()).add("length_control_events", static_cast<int>(events.size()))
+      .add("strategy", o.run.strategy).add("t_end", integrator.time())
+      .add("length_control_events", static_cast<int>(events.size()))
       .add("min_element_length_ratio", events.empty() ? 0.0 : min_ratio)
       .add("max_element_length_ratio", events.empty() ? 0.0 : max_ratio)
       .add("max_energy_drift", energy.max_drift() / energy.max_kinetic())
