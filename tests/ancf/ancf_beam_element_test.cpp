@@ -191,17 +191,17 @@ TEST_CASE("ANCF Poisson locking remedy: derivatives and both methods", "[ancf][e
 TEST_CASE("ANCF shear factor: force and Jacobian against finite differences", "[ancf][element][shear]") {
   // k = 5/6 (a rectangle's Timoshenko factor); with the remedy k = 0.6, so that neither term hides
   // in the other. The excess (k − 1)μ is 17 % and 40 % of μ: a wrong term fails by O(1e-2).
+  using core::AncfLockingRemedy;
   const double k = 5.0 / 6.0;
+  const auto circle = core::SectionIntegrals::circle(0.03), angle = core::SectionIntegrals::polygon(l_angle());
   for (const auto method : {core::AncfForceMethod::gerstmayr, core::AncfForceMethod::invariant}) {
     INFO((method == core::AncfForceMethod::gerstmayr ? "method II" : "method I"));
-    check_against_finite_differences<2>(core::SectionIntegrals::circle(0.03), method, core::AncfLockingRemedy::none, k);
-    check_against_finite_differences<2>(core::SectionIntegrals::polygon(l_angle()), method, core::AncfLockingRemedy::none, k);
-    check_against_finite_differences<3>(core::SectionIntegrals::circle(0.03), method, core::AncfLockingRemedy::none, k);
-    check_against_finite_differences<3>(core::SectionIntegrals::polygon(l_angle()), method, core::AncfLockingRemedy::none, k);
-    check_against_finite_differences<2>(core::SectionIntegrals::polygon(l_angle()), method,
-                                        core::AncfLockingRemedy::uniaxial_bending, 0.6);
-    check_against_finite_differences<3>(core::SectionIntegrals::polygon(l_angle()), method,
-                                        core::AncfLockingRemedy::uniaxial_bending, 0.6);
+    check_against_finite_differences<2>(circle, method, AncfLockingRemedy::none, k);
+    check_against_finite_differences<2>(angle, method, AncfLockingRemedy::none, k);
+    check_against_finite_differences<3>(circle, method, AncfLockingRemedy::none, k);
+    check_against_finite_differences<3>(angle, method, AncfLockingRemedy::none, k);
+    check_against_finite_differences<2>(angle, method, AncfLockingRemedy::uniaxial_bending, 0.6);
+    check_against_finite_differences<3>(angle, method, AncfLockingRemedy::uniaxial_bending, 0.6);
   }
 }
 
@@ -221,7 +221,8 @@ TEST_CASE("ANCF shear factor against a direct volume integration of S_xy = 2k mu
                                       test::circle_quadrature(0.03, {0.01, -0.02}), 5.0 / 6.0);
 }
 
-TEST_CASE("ANCF shear factor: the energy it scales, torsion, and the locking remedy beside it", "[ancf][element][shear]") {
+TEST_CASE("ANCF shear factor: the energy it scales, torsion, and the locking remedy beside it",
+          "[ancf][element][shear]") {
   using core::AncfLockingRemedy;
   const auto section = core::SectionIntegrals::polygon(l_angle());
   for (const auto method : {core::AncfForceMethod::gerstmayr, core::AncfForceMethod::invariant}) {
@@ -264,7 +265,8 @@ TEST_CASE("ANCF shear factor: the energy it scales, torsion, and the locking rem
 
 TEST_CASE("ANCF shear factor input errors", "[ancf][element][shear]") {
   // 0 < k ≤ 1: k ≤ 0 leaves no shear stiffness, and above 1 is the reciprocal (form factor A/A_s).
-  for (const double k : {0.0, -0.5, 1.2, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const double k : {0.0, -0.5, 1.2, nan, inf}) {
     INFO("k = " << k);
     core::Model model;
     const int blocks = model.state().block_count();

@@ -62,7 +62,8 @@ TEST_CASE("ANCF cantilever without Poisson effect converges to beam theory", "[a
   // section that stays plane (no shear correction factor): 5.8946 + 0.0009 mm. Tolerance 1e-4
   // relative: linear theory ignores the geometric nonlinearity, of order (δ/L)² ≈ 3.5e-5
   // (measured −3.2e-5; the geometrically exact beam shows the same, examples/ancf_cantilever).
-  const double d30 = tip_deflection({.kind = AncfElementKind::higher_order_30, .method = AncfForceMethod::invariant, .elements = 8});
+  const double d30 =
+      tip_deflection({.kind = AncfElementKind::higher_order_30, .method = AncfForceMethod::invariant, .elements = 8});
   const double shear = tip_force * length / (E / 2 * std::numbers::pi * radius * radius);
   CHECK(std::fabs(d30 / (euler_bernoulli + shear) - 1) < 1e-4);
 }
@@ -110,7 +111,8 @@ TEST_CASE("ANCF cantilever at nu = 0.33 with the uniaxial-bending remedy", "[anc
   }
 }
 
-TEST_CASE("ANCF cantilever shear factor: k = 5/6 and k = 1 differ by the Timoshenko shear deflection", "[ancf][validation]") {
+TEST_CASE("ANCF cantilever shear factor: k = 5/6 and k = 1 differ by the Timoshenko shear deflection",
+          "[ancf][validation]") {
   using core::AncfElementKind, core::AncfForceMethod, core::AncfLockingRemedy;
   // Timoshenko's tip deflection under a tip force is F L³/(3 E I) + F L/(k G A): the bending part
   // does not see k (W changes only in E_xy, E_xz, eq. A22), so the two deflections differ by

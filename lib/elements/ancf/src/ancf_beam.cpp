@@ -17,8 +17,8 @@ template <int transverse>
 void add_elements(Model& model, const AncfBeamParameters& p, double l, AncfBeam& beam) {
   // Equal elements share one set of tables (001 §6: "the invariants can be shared for elements
   // with equal dimensions").
-  const auto tables = std::make_shared<const AncfElementTables<transverse>>(l, p.material, p.section, p.method, p.remedy,
-                                                                           p.shear_factor);
+  const auto tables =
+      std::make_shared<const AncfElementTables<transverse>>(l, p.material, p.section, p.method, p.remedy, p.shear_factor);
   for (int e = 0; e < p.elements; ++e) {
     std::vector<int> blocks{beam.nodes[e], beam.nodes[e + 1]};
     if constexpr (transverse == 3) {

@@ -98,7 +98,8 @@ double ancf_section_energy(const double (&M)[3][3][3][3], const AncfSectionLaw& 
   // S̄_pq = ∫ φ_p φ_q S dA = Σ_ij M_pqij Ŝ_ij = λ tr(Ē_pq) I + 2μ Ē_pq + 2(k − 1)μ X∘Ē_pq with
   // Ē_pq = Σ_ij M_pqij Ê_ij (Ŝ is linear in Ê; X masks the transverse shear entries (0, 1), (0, 2)
   // and their transposes, eq. A22), summed over i ≤ j (M and Ê are symmetric in i, j).
-  static const Matrix3 shear_mask = (Matrix3() << 0, 1, 1, 1, 0, 0, 1, 0, 0).finished();
+  static const Matrix3 shear_mask =
+      Matrix3::NullaryExpr([](Eigen::Index i, Eigen::Index j) { return transverse_shear(int(i), int(j)) ? 1.0 : 0.0; });
   double W = 0.0;
   for (int p = 0; p < 3; ++p)
     for (int q = p; q < 3; ++q) {
