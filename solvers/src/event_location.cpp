@@ -92,7 +92,7 @@ void GeneralizedAlpha::Implementation::handle_events() {
   } else if (event) {
     consistent_accelerations(false);
     evaluate(state.time, nullptr, 1.0);
-    balance.restart(assembly);
+    restart_balance();
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 
 namespace spar::solvers {
@@ -119,7 +120,10 @@ void GeneralizedAlpha::step() {
     timed(impl_->counters, [&] { impl_->step_with_events(); });
   });
   impl_->just_initialized = false;
+  if (std::isfinite(impl_->options.energy_alarm) && impl_->energy_check_due()) impl_->watch_energy(energies());
 }
+
+const std::optional<EnergyAlarm>& GeneralizedAlpha::energy_alarm() const { return impl_->alarm; }
 
 void GeneralizedAlpha::remap(const Eigen::MatrixXd& P, const Eigen::VectorXd& increment_units) {
   const int new_dofs = impl_->model.dof_count();

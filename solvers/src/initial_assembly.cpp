@@ -28,7 +28,10 @@ void GeneralizedAlpha::Implementation::initialize() {
   matrix.freeze(assembly, input(state.time));
   evaluate(state.time, nullptr, 1.0);
   // The balance starts at t = 0 with the consistent accelerations.
-  if (!initialized) balance.initial_energy = detail::mechanical_energy(assembly);
+  if (!initialized) {
+    balance.initial_energy = detail::mechanical_energy(assembly);
+    balance.initial_gravity = assembly.energies().gravity;
+  }
   // Finite inputs may still overflow in the energies (a mass of 1e300 kg at z = -1e300 m): the
   // balance would be NaN from the start (found by tests/input/fuzz_test.cpp).
   if (!std::isfinite(detail::mechanical_energy(assembly)))
@@ -36,7 +39,7 @@ void GeneralizedAlpha::Implementation::initialize() {
                     " is not finite (kinetic, strain or gravity potential overflows)",
                 "solvers::GeneralizedAlpha::initialize",
                 "check the model's masses, positions, velocities and gravity for absurd magnitudes");
-  balance.restart(assembly);
+  restart_balance();
   initialized = true;
 }
 
@@ -96,8 +99,7 @@ void GeneralizedAlpha::Implementation::perturb_starting_values() {
   save(initial);
   // The step books its work and dissipation against the forces at its start, which initialize()
   // sets only afterwards; the auxiliary step's booking is discarded with it.
-  balance.last_work_force = Eigen::VectorXd::Zero(assembly.dof_count());
-  balance.last_dissipative_force = Eigen::VectorXd::Zero(assembly.dof_count());
+  balance.clear_forces(assembly.dof_count());
   if (!try_step(h, Predictor::extrapolated) && !try_step(h, Predictor::velocity_only))
     throw Error("the auxiliary step of the perturbed starting values did not converge at t = " +
                     significant(state.time) + " (h = " + significant(h) + "): " + last_failure,
@@ -197,7 +199,7 @@ void GeneralizedAlpha::Implementation::project_onto_constraints() {
   project_velocities(violation);
   consistent_accelerations(false);
   evaluate(state.time, nullptr, 1.0);
-  balance.restart(assembly);
+  restart_balance();
 }
 
 /// The initial assembly (DynamicOptions::initial_assembly): positions, then velocities, onto

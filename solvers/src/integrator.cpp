@@ -54,6 +54,9 @@ GeneralizedAlphaParameters GeneralizedAlpha::Implementation::validated_parameter
     throw Error("constraint_tolerance = " + significant(options.constraint_tolerance) + " and residual_tolerance = " +
                     significant(options.residual_tolerance) + " must be positive (+inf: the test is off)",
                 where, "fix the DynamicOptions' tolerances (NaN and values <= 0 are refused)");
+  if (!(options.energy_alarm > 0.0))
+    throw Error("energy_alarm = " + significant(options.energy_alarm) + " must be positive (+inf: no alarm)", where,
+                "give the fraction of the run's energy scale the integrator may create before it warns, e.g. 0.05");
   if (!(options.modified_newton_contraction > 0.0 && options.modified_newton_contraction <= 1.0))
     throw Error("modified_newton_contraction = " + significant(options.modified_newton_contraction) +
                     " is outside (0, 1]",

@@ -9,6 +9,7 @@
 //   event_location.cpp             user steps that land on the constraints' events
 //   structure_changes.cpp          new patterns after events, model changes and remaps
 //   energy_balance.cpp             the energy balance (eq. D8)
+//   energy_alarm.cpp               the alarm when the run creates energy (eq. D8a)
 //
 // The integrator advances one DynamicState. Its configuration is the model's between the public
 // calls: GeneralizedAlpha takes it from model.state() when a call starts and gives it back when
@@ -27,6 +28,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +55,9 @@ struct GeneralizedAlpha::Implementation {
   /// evaluate_constraints_and_loads): energies() evaluates them first.
   bool energies_stale = false;
   std::vector<std::pair<double, std::string>> events;
+  std::optional<EnergyAlarm> alarm;
+  long watched_steps = 0;    ///< user steps the energy alarm has seen
+  long unwatched_steps = 0;  ///< user steps since it last looked
   InitialAssembly assembly_report;
 
   /// What a failed step (or event location, or the auxiliary step of the perturbed starting
@@ -89,6 +94,8 @@ struct GeneralizedAlpha::Implementation {
   /// The elements' energies at the current state, for energies() after a step that ended on
   /// evaluate_constraints_and_loads.
   void evaluate_energies();
+  /// The balance's forces at the current state start the next step's work.
+  void restart_balance() { balance.restart(assembly, detail::driver_force(assembly, state.q, state.time, balance.driven)); }
   bool dynamic_residual_small(double residual_scale) const;
   double constraint_norm() const;
   /// 003 §5.1's ‖[Δq, h²βΔλ]‖², with Δq measured in each entry's unit when units are given.
@@ -181,6 +188,16 @@ struct GeneralizedAlpha::Implementation {
   // structure_changes.cpp ---------------------------------------------------------------------------
 
   void take_structure_changes();
+
+  // energy_alarm.cpp ------------------------------------------------------------------------------
+
+  /// Whether the alarm looks at this user step: when its energies are at hand (a residual-only
+  /// evaluation ended the step, or a driver asked for them), and at least every 10th step, where
+  /// it pays an energy evaluation (eq. D8a).
+  bool energy_check_due();
+  /// After a user step: `energies` (of the accepted state) widen the scale; the first time the
+  /// energy created passes DynamicOptions::energy_alarm of it, the alarm goes off (eq. D8a).
+  void watch_energy(const Energies& energies);
   void rebuild(const Eigen::MatrixXd* P);
 };
 

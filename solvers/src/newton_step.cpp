@@ -57,7 +57,7 @@ bool GeneralizedAlpha::Implementation::try_step(double h, Predictor predictor) {
   }
   if (converged) {
     state.algorithmic_acceleration = a + (1 - c.alpha_f) / (1 - c.alpha_m) * acceleration;
-    balance.book_step(assembly, increment);
+    balance.book_step(assembly, increment, detail::driver_force(assembly, state.q, t_next, balance.driven));
     state.time = t_next;
     return true;
   }

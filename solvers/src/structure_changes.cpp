@@ -53,7 +53,7 @@ void GeneralizedAlpha::Implementation::rebuild(const Eigen::MatrixXd* P) {
   // The balance carries on across the change: a jump of the energy at the event shows in the
   // numerical dissipation, where a user sees it.
   evaluate(state.time, nullptr, 1.0);
-  balance.restart(assembly);
+  restart_balance();
 }
 
 }  // namespace spar::solvers

@@ -105,6 +105,11 @@ public:
   /// Σ Bᵀλ of the constraints at the last evaluate() (global tangent layout): the constraint
   /// forces on the blocks are its negative.
   const Eigen::VectorXd& constraint_force() const { return constraint_force_; }
+  /// Adds constraint ci's Bᵀλ of the last evaluation to `force` (global tangent layout).
+  void add_constraint_force(int ci, Eigen::VectorXd& force) const {
+    const ConstraintWork& w = constraint_work_[static_cast<std::size_t>(ci)];
+    for (std::size_t i = 0; i < w.dofs.size(); ++i) force(w.dofs[i]) += w.force(static_cast<Eigen::Index>(i));
+  }
   /// The constraints given to the constructor, in the order of their multipliers.
   const std::vector<joints::Constraint*>& constraints() const { return constraints_; }
 

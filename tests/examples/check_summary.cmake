@@ -1,4 +1,5 @@
-# Script mode: run EXAMPLE with ARGS and --out OUT, read the JSON object on its last stdout line,
+# Script mode: run EXAMPLE with ARGS and --out OUT, check its stderr against STDERR_HAS and
+# STDERR_LACKS (regular expressions it must and must not match, if given), read the JSON object on its last stdout line,
 # and check each BOUNDS entry "key<value" or "key>value" (numbers compared by CMake's LESS and
 # GREATER). Each of FILES (names in OUT) must then exist and not be empty, and (xmllint, XMLLINT) every
 # XDMF sidecar in OUT must be well-formed XML. A failed bound or check fails the test, with the
@@ -8,6 +9,12 @@ execute_process(COMMAND ${EXAMPLE} ${ARGS} --out ${OUT} RESULT_VARIABLE status O
                 ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "the example failed (${status}):\n${out}\n${err}")
+endif()
+if(DEFINED STDERR_HAS AND NOT err MATCHES "${STDERR_HAS}")
+  message(FATAL_ERROR "stderr does not say '${STDERR_HAS}':\n${err}")
+endif()
+if(DEFINED STDERR_LACKS AND err MATCHES "${STDERR_LACKS}")
+  message(FATAL_ERROR "stderr says '${STDERR_LACKS}':\n${err}")
 endif()
 string(STRIP "${out}" out)
 string(REGEX REPLACE "^.*\n" "" summary "${out}")

@@ -5,6 +5,7 @@
 // between steps) and what it reduces (last, max, min, spread, the energy drift) are compared with
 // that motion; the declarations it must refuse are refused.
 #include <spar/core/model.hpp>
+#include <spar/joints/spherical_joint.hpp>
 #include <spar/elements/rigid_body/rigid_body.hpp>
 #include <spar/solvers/generalized_alpha.hpp>
 #include <spar/study/command_line.hpp>
@@ -18,9 +19,11 @@
 #include <string>
 #include <vector>
 
+#include "../../examples/heavy_top/reference.hpp"
 #include "output_fixtures.hpp"
 
 using namespace spar;
+namespace top = spar::examples::heavy_top;
 
 namespace {
 
@@ -237,4 +240,41 @@ TEST_CASE("a profile of the wrong size or with a NaN stops the run with the prof
   nan.profile({.name = "undefined", .unit = "1", .description = "NaN"}, Eigen::VectorXd::Zero(1), 1,
               [](const study::State&) { return Eigen::MatrixXd::Constant(1, 1, std::nan("")); });
   CHECK_THROWS_WITH(nan.run(0.05), Catch::Contains("profiles[0] (undefined)") && Catch::Contains("not finite"));
+}
+
+TEST_CASE("the recorder writes the energy alarm of a run that created energy, and none otherwise", "[study]") {
+  // The heavy top at ρ∞ = 1, h = 1e-3 (docs/dynamics.md D8a): the alarm at t = 0.428 s.
+  const top::TopParameters p = top::classic_top();
+  for (const double rho : {1.0, 0.9}) {
+    core::Model model;
+    const int body = core::rigid_body(model, core::add_rigid_body(model, {.center_of_mass = p.center_of_mass,
+                                                                          .mass = p.mass, .inertia = p.inertia}))
+                         .node;
+    model.set_gravity(p.gravity);
+    solvers::ConstraintList joints;
+    joints.push_back(std::make_unique<joints::SphericalJoint>(
+        joints::Attachment{.node = body, .offset = -p.center_of_mass},
+        joints::Attachment{.node = -1, .offset = Eigen::Vector3d::Zero()}, model.state()));
+    solvers::GeneralizedAlpha integrator(model, std::move(joints), {.time_step = 1e-3, .spectral_radius = rho});
+    const Eigen::Vector3d omega(0.0, 150.0, -4.61538);
+    integrator.set_velocity(body, omega.cross(p.center_of_mass), omega);
+    integrator.initialize();
+    const spar::test::ScratchFolder folder("study_energy_alarm");
+    study::Recorder rec(integrator, {.folder = folder.file(""), .name = "top", .time_step = 1e-3,
+                                     .schedule = study::Schedule::every_steps(100), .report = false});
+    rec.energy_balance();
+    rec.run(0.6);
+    rec.close();
+    const spar::test::ReadOnlyFile file(folder.file("top.h5"));
+    CHECK(file.has("/scalars/created_energy"));
+    if (rho == 1.0) {
+      REQUIRE(integrator.energy_alarm());
+      CHECK(file.double_attribute("energy_alarm_time") == integrator.energy_alarm()->time);
+      CHECK(file.double_attribute("energy_alarm_created") == integrator.energy_alarm()->created);
+      CHECK(file.double_attribute("energy_alarm_scale") == integrator.energy_alarm()->scale);
+    } else {
+      CHECK_FALSE(integrator.energy_alarm());
+      CHECK_THROWS(file.double_attribute("energy_alarm_time"));
+    }
+  }
 }

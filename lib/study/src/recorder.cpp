@@ -79,7 +79,11 @@ EnergyBalance Recorder::energy_balance() {
           energy("numerical_dissipation",
                  "energy removed by the integrator since t = 0: external_work - (E - E(0)) - physical_dissipation, "
                  "E = kinetic + strain + gravity",
-                 &solvers::Energies::numerical_dissipation)};
+                 &solvers::Energies::numerical_dissipation),
+          energy("created_energy",
+                 "energy the integrator created since t = 0: E - E(0) + physical_dissipation - the work of the loads "
+                 "and of the drivers (lambda . Phi_t); the energy alarm watches it (docs/dynamics.md D8a)",
+                 &solvers::Energies::created)};
 }
 
 namespace {
@@ -220,6 +224,11 @@ void Recorder::close() {
   writer.write_attribute("substructured_factorizations", std::int64_t{counters.substructured_factorizations});
   writer.write_attribute("jtheta_updates", std::int64_t{counters.jtheta_evaluations});
   writer.write_attribute("cutbacks", std::int64_t{counters.cutbacks});
+  if (const std::optional<solvers::EnergyAlarm>& alarm = integrator.energy_alarm()) {
+    writer.write_attribute("energy_alarm_time", alarm->time);
+    writer.write_attribute("energy_alarm_created", alarm->created);
+    writer.write_attribute("energy_alarm_scale", alarm->scale);
+  }
   const int states = writer.steps_written();
   writer.close();
   if (impl_->csv) impl_->csv->close();

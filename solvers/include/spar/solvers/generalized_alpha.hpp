@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -114,6 +115,13 @@ struct DynamicOptions {
   /// and remaps restart with a = v̇ and the velocities as they are. Off by default: a step drive
   /// (the flexible slider-crank's) makes v̈₀ meaningless (D6d).
   bool perturbed_starting_values = false;
+  /// The energy alarm (docs/dynamics.md D8a): after every step the energy the integrator created
+  /// since t = 0 (Energies::created) is compared with the run's energy scale (Energies::scale);
+  /// the first time it exceeds `energy_alarm` times the scale, the integrator warns on stderr
+  /// (once per run) and energy_alarm() reports when and how much. A run that creates energy is
+  /// unstable or under-resolved: the index-3 form at ρ∞ = 1 with constraints can be (the heavy
+  /// top at h = 1e-3); ρ∞ < 1 or a smaller step cures it. ∞ turns the alarm off.
+  double energy_alarm = 0.05;
 };
 
 /// What the initial assembly changed (DynamicOptions::initial_assembly).
@@ -167,7 +175,23 @@ struct Energies {
   /// What the integrator dissipated since t = 0: external_work − (total() − total at t = 0) −
   /// physical_dissipation.
   double numerical_dissipation = 0.0;
+  /// The energy the integrator created since t = 0 (docs/dynamics.md D8a): (total() − total at
+  /// t = 0) + physical_dissipation − the work of the loads and of the drivers (λᵀΦ_t, so that a
+  /// passive joint does no work). Near zero or negative in a stable run; its growth is what
+  /// DynamicOptions::energy_alarm watches.
+  double created = 0.0;
+  /// The run's energy scale so far: the largest kinetic + |strain| + |gravity − gravity at t = 0|
+  /// + |work of the loads| + |work of the drivers| + physical_dissipation of the accepted states.
+  double scale = 0.0;
   double total() const { return kinetic + strain + gravity; }
+};
+
+/// When and how much energy the integrator created, the first time it passed the alarm
+/// (DynamicOptions::energy_alarm).
+struct EnergyAlarm {
+  double time = 0.0;     ///< the end of the step where it happened, s
+  double created = 0.0;  ///< Energies::created then, J
+  double scale = 0.0;    ///< Energies::scale then, J
 };
 
 using ConstraintList = std::vector<std::unique_ptr<joints::Constraint>>;
@@ -231,6 +255,8 @@ public:
   double constraint_residual() const;
   /// The energies at the current state and the balance since t = 0.
   Energies energies() const;
+  /// The first time the energy alarm went off (DynamicOptions::energy_alarm), or nothing.
+  const std::optional<EnergyAlarm>& energy_alarm() const;
   /// What the initial assembly of the first initialize() changed.
   const InitialAssembly& initial_assembly() const;
 

@@ -74,7 +74,7 @@ private:
 
 /// The scalars of the energy balance (docs/dynamics.md D8).
 struct EnergyBalance {
-  Scalar kinetic, strain, gravity, external_work, physical_dissipation, numerical_dissipation;
+  Scalar kinetic, strain, gravity, external_work, physical_dissipation, numerical_dissipation, created;
 };
 
 struct RecorderOptions {
@@ -148,7 +148,7 @@ public:
     return add_vector(std::move(quantity), std::move(point));
   }
   /// kinetic_energy, strain_energy, gravity_potential, external_work, physical_dissipation,
-  /// numerical_dissipation (J).
+  /// numerical_dissipation, created_energy (J; docs/dynamics.md D8–D8a).
   EnergyBalance energy_balance();
   /// The total energy E = kinetic + strain + gravity potential, "total_energy" in J unless
   /// `quantity` says otherwise.
@@ -213,8 +213,10 @@ public:
   /// recording each step as scheduled. Call integrator.initialize() first.
   void run(double t_end, const RunHooks& hooks = {});
   /// Writes the counters (t_end, steps, newton_iterations, factorizations,
-  /// substructured_factorizations, jtheta_updates, cutbacks) as attributes, closes the files and
-  /// prints RecorderOptions::report's line.
+  /// substructured_factorizations, jtheta_updates, cutbacks) as attributes, and the energy alarm's
+  /// energy_alarm_time (s), energy_alarm_created and energy_alarm_scale (J) if it went off
+  /// (solvers::DynamicOptions::energy_alarm), closes the files and prints RecorderOptions::report's
+  /// line.
   void close();
 
   /// A JSON summary holding `contents` (the counters, the integrator's wall time as wall_s; the
