@@ -115,8 +115,9 @@ struct DynamicOptions {
   /// and remaps restart with a = v̇ and the velocities as they are. Off by default: a step drive
   /// (the flexible slider-crank's) makes v̈₀ meaningless (D6d).
   bool perturbed_starting_values = false;
-  /// The energy alarm (docs/dynamics.md D8a): after every step the energy the integrator created
-  /// since t = 0 (Energies::created) is compared with the run's energy scale (Energies::scale);
+  /// The energy alarm (docs/dynamics.md D8a): after every step whose energies are at hand, and at
+  /// least every 10th step (an energy evaluation there), the energy the integrator created since
+  /// t = 0 (Energies::created) is compared with the run's energy scale (Energies::scale);
   /// the first time it exceeds `energy_alarm` times the scale, the integrator warns on stderr
   /// (once per run) and energy_alarm() reports when and how much. A run that creates energy is
   /// unstable or under-resolved: the index-3 form at ρ∞ = 1 with constraints can be (the heavy
