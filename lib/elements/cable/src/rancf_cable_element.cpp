@@ -85,13 +85,24 @@ void check_block_size(const Configuration& q, int block, int size, const char* w
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
+// What both elements share.
+
+RancfCableBase::RancfCableBase(const RancfCableParameters& parameters, int dim, bool ale, const char* where)
+    : parameters_(parameters), blocks_{parameters.node_a, parameters.node_b} {
+  if (ale) blocks_.insert(blocks_.end(), {parameters.material_a, parameters.material_b});
+  if (dim == 2)
+    check_parameters<2>(parameters_, ale, where);
+  else
+    check_parameters<3>(parameters_, ale, where);
+  table_ = rancf::quadrature_table(parameters_.weights, parameters_.quadrature_points);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Fixed-length RANCF element.
 
 template <int Dim>
 RancfCableElement<Dim>::RancfCableElement(const RancfCableParameters& parameters)
-    : parameters_(parameters), blocks_{parameters.node_a, parameters.node_b} {
-  check_parameters<Dim>(parameters_, false, "core::RancfCableElement");
-  table_ = rancf::quadrature_table(parameters_.weights, parameters_.quadrature_points);
+    : RancfCableBase(parameters, Dim, false, "core::RancfCableElement") {
   if (parameters_.reference)
     for (const rancf::QuadraturePoint& p : table_)
       reference_table_.push_back(
@@ -273,11 +284,7 @@ void ale_residual(const RancfCableParameters& parameters,
 
 template <int Dim>
 AleRancfCableElement<Dim>::AleRancfCableElement(const RancfCableParameters& parameters)
-    : parameters_(parameters),
-      blocks_{parameters.node_a, parameters.node_b, parameters.material_a, parameters.material_b} {
-  check_parameters<Dim>(parameters_, true, "core::AleRancfCableElement");
-  table_ = rancf::quadrature_table(parameters_.weights, parameters_.quadrature_points);
-}
+    : RancfCableBase(parameters, Dim, true, "core::AleRancfCableElement") {}
 
 template <int Dim>
 void AleRancfCableElement<Dim>::compute(const ElementInput& in, const ElementRequest& request,

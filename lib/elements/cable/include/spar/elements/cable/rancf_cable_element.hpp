@@ -77,51 +77,53 @@ struct RancfCableParameters {
   double material_start = 0.0;
 };
 
+/// What the fixed-length and the ALE element share: their parameters, blocks and quadrature table,
+/// checked and built once, and the Element answers that follow from them.
+class RancfCableBase : public Element {
+public:
+  const std::vector<int>& blocks() const override { return blocks_; }
+  std::string name() const override { return parameters_.name; }
+  /// Damped (RancfSection::damping_coefficient > 0): the Kelvin–Voigt force is its dissipative force.
+  bool has_dissipation() const override { return parameters_.section.damping_coefficient > 0.0; }
+  const RancfCableParameters& parameters() const { return parameters_; }
+
+protected:
+  /// Checks `parameters` for the ALE element (`ale`: four blocks, the material coordinates' too)
+  /// or the fixed-length one (two) in `dim` dimensions, naming `where` in its errors, and builds
+  /// the quadrature table.
+  RancfCableBase(const RancfCableParameters& parameters, int dim, bool ale, const char* where);
+  RancfCableParameters parameters_;
+  std::vector<int> blocks_;
+  std::vector<rancf::QuadraturePoint> table_;
+};
+
 template <int Dim>
-class RancfCableElement final : public Element {
+class RancfCableElement final : public RancfCableBase {
 public:
   static_assert(Dim == 2 || Dim == 3, "RANCF cables are planar or spatial");
   /// Throws spar::Error for non-positive length, weights or section values, missing blocks or a
   /// quadrature outside 2 … 16 points.
   explicit RancfCableElement(const RancfCableParameters& parameters);
 
-  const std::vector<int>& blocks() const override { return blocks_; }
-  std::string name() const override { return parameters_.name; }
-  /// Damped (RancfSection::damping_coefficient > 0): the Kelvin–Voigt force is its dissipative force.
-  bool has_dissipation() const override { return parameters_.section.damping_coefficient > 0.0; }
-  const RancfCableParameters& parameters() const { return parameters_; }
-
 private:
   void compute(const ElementInput& in, const ElementRequest& request,
                ElementOutput& out) const override;
-  RancfCableParameters parameters_;
-  std::vector<int> blocks_;
-  std::vector<rancf::QuadraturePoint> table_;
   std::vector<ReferenceStrain<double>> reference_table_;  ///< ε₀, κ₀ at the Gauss points, or empty
   /// The constant 4×4 mass matrix m of the shape functions: M = m ⊗ I_Dim (000 eq. (19)).
   Eigen::Matrix4d shape_mass_;
 };
 
 template <int Dim>
-class AleRancfCableElement final : public Element {
+class AleRancfCableElement final : public RancfCableBase {
 public:
   static_assert(Dim == 2 || Dim == 3, "RANCF cables are planar or spatial");
   /// Throws spar::Error as RancfCableElement, and for material blocks that are not scalars.
   explicit AleRancfCableElement(const RancfCableParameters& parameters);
 
-  const std::vector<int>& blocks() const override { return blocks_; }
-  std::string name() const override { return parameters_.name; }
-  /// Damped (RancfSection::damping_coefficient > 0): the Kelvin–Voigt force is its dissipative force.
-  bool has_dissipation() const override { return parameters_.section.damping_coefficient > 0.0; }
-  const RancfCableParameters& parameters() const { return parameters_; }
-
 private:
   /// Throws spar::Error when x_B ≤ x_A (an element turned inside out).
   void compute(const ElementInput& in, const ElementRequest& request,
                ElementOutput& out) const override;
-  RancfCableParameters parameters_;
-  std::vector<int> blocks_;
-  std::vector<rancf::QuadraturePoint> table_;
 };
 
 extern template class RancfCableElement<2>;
