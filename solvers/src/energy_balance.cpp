@@ -62,7 +62,7 @@ Energies EnergyBalance::energies(const SystemAssembly& assembly) const {
                     .physical_dissipation = physical_dissipation};
   energies.numerical_dissipation =
       energies.external_work - (energies.total() - initial_energy) - energies.physical_dissipation;
-  // eq. D8a: the energy created, the balance with the drivers' work λᵀΦ_t for the constraints'.
+  // eq. D8a: the energy created, the balance in which of the constraints only the drivers work.
   energies.created = (energies.total() - initial_energy) + energies.physical_dissipation - load_work - driver_work;
   energies.scale = scale;
   return energies;

@@ -82,7 +82,7 @@ EnergyBalance Recorder::energy_balance() {
                  &solvers::Energies::numerical_dissipation),
           energy("created_energy",
                  "energy the integrator created since t = 0: E - E(0) + physical_dissipation - the work of the loads "
-                 "and of the drivers (lambda . Phi_t); the energy alarm watches it (docs/dynamics.md D8a)",
+                 "and of the drivers (passive joints do none); the energy alarm watches it (docs/dynamics.md D8a)",
                  &solvers::Energies::created)};
 }
 

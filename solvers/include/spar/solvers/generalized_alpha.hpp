@@ -177,9 +177,9 @@ struct Energies {
   /// physical_dissipation.
   double numerical_dissipation = 0.0;
   /// The energy the integrator created since t = 0 (docs/dynamics.md D8a): (total() − total at
-  /// t = 0) + physical_dissipation − the work of the loads and of the drivers (λᵀΦ_t, so that a
-  /// passive joint does no work). Near zero or negative in a stable run; its growth is what
-  /// DynamicOptions::energy_alarm watches.
+  /// t = 0) + physical_dissipation − the work of the loads and of the drivers (the constraints
+  /// whose Φ_t is not zero; a passive joint does no work). Near zero or negative in a stable run;
+  /// its growth is what DynamicOptions::energy_alarm watches.
   double created = 0.0;
   /// The run's energy scale so far: the largest kinetic + |strain| + |gravity − gravity at t = 0|
   /// + |work of the loads| + |work of the drivers| + physical_dissipation of the accepted states.
